@@ -1,0 +1,212 @@
+/// @file
+/// Constructions of E3: planes through points, convex polygons and polyhedra,
+/// splitting by a plane, and exact evaluation of implicit vertices.
+#pragma once
+
+#include "predicates.hpp"
+
+#include <optional>
+#include <stdexcept>
+
+namespace geometry::e3 {
+
+/// The plane through `p`, `q`, `r`, positive on the side from which they turn counter-clockwise.
+template <number FT>
+hyperplane<FT> plane_through(point<FT> const& p, point<FT> const& q, point<FT> const& r, hyperplane_tag tag = no_tag) {
+  std::array<FT, 3> u{FT(q.x() - p.x()), FT(q.y() - p.y()), FT(q.z() - p.z())};
+  std::array<FT, 3> v{FT(r.x() - p.x()), FT(r.y() - p.y()), FT(r.z() - p.z())};
+  auto n = cross(u, v);
+  FT d = -(n[0] * p.x() + n[1] * p.y() + n[2] * p.z());
+  return hyperplane<FT>(hvec<FT, 4>(std::array<FT, 4>{n[0], n[1], n[2], d}), tag);
+}
+
+/// The plane at infinity, positive on the whole space.
+template <number FT> hyperplane<FT> plane_at_infinity() {
+  return hyperplane<FT>(hvec<FT, 4>(std::array<FT, 4>{FT(0), FT(0), FT(0), FT(1)}));
+}
+
+/// @name Convex polygons
+/// @{
+
+/// The whole plane `h` as a sub-hyperplane.
+template <number FT> sub_hyperplane<FT> whole_plane(hyperplane<FT> const& h) {
+  std::size_t k = dominant_axis(h.n);
+  auto inf = plane_at_infinity<FT>();
+  return {h, k, {polygon_bound<FT>{inf, restrict_to(h.n, k, inf.n)}}};
+}
+
+/// The same point set with the opposite orientation.
+template <number FT> sub_hyperplane<FT> opposite(sub_hyperplane<FT> const& s) {
+  return {s.support.opposite(), s.axis, mirrored(s.bounds)};
+}
+
+/// The parts of the polygon `s` on either side of `h`, or its coincidence with `h`.
+template <number FT> split_result<sub_hyperplane<FT>> split(sub_hyperplane<FT> const& s, hyperplane<FT> const& h) {
+  split_result<sub_hyperplane<FT>> out;
+  out.coincident = parallel(s.support.n, h.n);
+  if (out.is_coincident()) return out;
+  auto r = restrict_to(s.support.n, s.axis, h.n);
+  polygon_bound<FT> hp{h, r}, hn{h.opposite(), -r};
+  auto parts = detail::split_polygon(s.bounds, hp, hn);
+  if (parts.negative) out.negative = sub_hyperplane<FT>{s.support, s.axis, std::move(*parts.negative)};
+  if (parts.positive) out.positive = sub_hyperplane<FT>{s.support, s.axis, std::move(*parts.positive)};
+  return out;
+}
+
+/// The plane through the edge `p`–`q` that contains the direction of axis `k`
+/// (degree 2 in the input), oriented so that `inside` is on its positive side.
+template <number FT>
+hyperplane<FT> edge_plane(point<FT> const& p, point<FT> const& q, std::size_t k, point<FT> const& inside) {
+  std::array<FT, 3> d{FT(q.x() - p.x()), FT(q.y() - p.y()), FT(q.z() - p.z())};
+  std::array<FT, 3> e{FT(0), FT(0), FT(0)};
+  e[k] = FT(1);
+  auto n = cross(d, e);
+  FT off = -(n[0] * p.x() + n[1] * p.y() + n[2] * p.z());
+  hyperplane<FT> b(hvec<FT, 4>(std::array<FT, 4>{n[0], n[1], n[2], off}));
+  return side(b, inside) == oriented_side::negative ? b.opposite() : b;
+}
+
+/// The convex polygon with the given vertices (strictly convex, planar),
+/// oriented so that they turn counter-clockwise seen from its positive side.
+/// Bounding planes are input-derived (degree 2).  Throws `std::invalid_argument`
+/// for fewer than 3 vertices or collinear first three.
+template <number FT> sub_hyperplane<FT> convex_polygon(std::vector<point<FT>> const& v, hyperplane_tag tag = no_tag) {
+  std::size_t n = v.size();
+  if (n < 3) throw std::invalid_argument("e3::convex_polygon needs at least 3 vertices");
+  auto support = plane_through(v[0], v[1], v[2], tag);
+  if (support.n[0] == 0 && support.n[1] == 0 && support.n[2] == 0)
+    throw std::invalid_argument("e3::convex_polygon: the first three vertices are collinear");
+  // Project along the largest normal component: the edge planes then contain that axis.
+  std::size_t k = dominant_axis(hvec<FT, 3>(std::array<FT, 3>{support.n[0], support.n[1], support.n[2]}));
+  std::optional<sub_hyperplane<FT>> s = whole_plane(support);
+  for (std::size_t i = 0; i < n && s; ++i) {
+    auto const& inside = v[(i + 2) % n];
+    s = split(*s, edge_plane(v[i], v[(i + 1) % n], k, inside)).positive;
+  }
+  if (!s) throw std::invalid_argument("e3::convex_polygon: vertices are not convex");
+  return *s;
+}
+
+/// The homogeneous vertices of a polygon (w = 0 at infinity); none when it has fewer than two bounds.
+template <number FT> std::vector<hvec<FT, 4>> homogeneous_vertices(sub_hyperplane<FT> const& s) {
+  std::vector<hvec<FT, 4>> out;
+  std::size_t k = s.bounds.size();
+  if (k < 2) return out;
+  for (std::size_t i = 0; i < k; ++i) {
+    auto x = cross(s.bounds[i].line(), s.bounds[(i + 1) % k].line());
+    out.push_back(lift(s.support.n, s.axis, x.exact()));
+  }
+  return out;
+}
+
+/// The vertices of a bounded polygon, exact; nothing when it is unbounded.
+template <number FT> std::optional<std::vector<point<FT>>> vertices(sub_hyperplane<FT> const& s) {
+  auto hv = homogeneous_vertices(s);
+  if (hv.empty()) return std::nullopt;
+  std::vector<point<FT>> out;
+  for (auto const& x : hv) {
+    if (sign_of(x[3]) != sign::positive) return std::nullopt;
+    out.emplace_back(FT(x[0] / x[3]), FT(x[1] / x[3]), FT(x[2] / x[3]));
+  }
+  return out;
+}
+
+/// Signed area of a bounded polygon projected on the coordinate plane
+/// perpendicular to axis `k` (exact over exact fields).
+template <number FT> std::optional<FT> projected_area(sub_hyperplane<FT> const& s, std::size_t k) {
+  auto v = vertices(s);
+  if (!v) return std::nullopt;
+  std::size_t i = (k + 1) % 3, j = (k + 2) % 3;
+  FT twice(0);
+  for (std::size_t a = 0; a < v->size(); ++a) {
+    auto const &p = (*v)[a], &q = (*v)[(a + 1) % v->size()];
+    twice = twice + (p[i] * q[j] - p[j] * q[i]);
+  }
+  return FT(twice / FT(2));
+}
+
+/// @}
+
+/// @name Convex polyhedra
+/// @{
+
+/// The whole space.
+template <number FT> polytope<FT> whole_space() { return {}; }
+
+/// The parts of `c` on either side of `h`.  The new face of both parts is `h`
+/// within `c`: the plane `h` cut by the planes of `c`'s faces.
+template <number FT> split_result<polytope<FT>> split(polytope<FT> const& c, hyperplane<FT> const& h) {
+  split_result<polytope<FT>> out;
+  for (auto const& f : c.faces) {
+    sign par = parallel(f.support.n, h.n);
+    if (par == sign::zero) continue;
+    (par == sign::positive ? out.positive : out.negative) = c;
+    return out;
+  }
+  std::optional<sub_hyperplane<FT>> section = whole_plane(h);
+  for (auto const& f : c.faces) {
+    section = split(*section, f.support).positive;
+    if (!section) break;
+  }
+  polytope<FT> neg, pos;
+  for (auto const& f : c.faces) {
+    auto r = split(f, h);
+    if (r.negative) neg.faces.push_back(std::move(*r.negative));
+    if (r.positive) pos.faces.push_back(std::move(*r.positive));
+  }
+  if (!section) {
+    if (!pos.faces.empty()) out.positive = c;
+    else out.negative = c;
+    return out;
+  }
+  neg.faces.push_back(opposite(*section));
+  pos.faces.push_back(std::move(*section));
+  out.negative = std::move(neg);
+  out.positive = std::move(pos);
+  return out;
+}
+
+/// The axis-aligned box [lo, hi] (lo < hi in every coordinate).
+template <number FT> polytope<FT> box(point<FT> const& lo, point<FT> const& hi) {
+  polytope<FT> c = whole_space<FT>();
+  for (std::size_t k = 0; k < 3; ++k) {
+    std::array<FT, 4> a{FT(0), FT(0), FT(0), FT(-lo[k])}, b{FT(0), FT(0), FT(0), FT(hi[k])};
+    a[k] = FT(1);
+    b[k] = FT(-1);
+    c = *split(c, hyperplane<FT>(hvec<FT, 4>(a))).positive;
+    c = *split(c, hyperplane<FT>(hvec<FT, 4>(b))).positive;
+  }
+  return c;
+}
+
+/// Volume of a bounded polyhedron, exact over exact fields; nothing when unbounded.
+template <number FT> std::optional<FT> volume(polytope<FT> const& c) {
+  if (c.faces.empty()) return std::nullopt;
+  std::vector<std::vector<point<FT>>> fv;
+  FT cx(0), cy(0), cz(0);
+  std::size_t count = 0;
+  for (auto const& f : c.faces) {
+    auto v = vertices(f);
+    if (!v) return std::nullopt;
+    for (auto const& p : *v) cx = cx + p.x(), cy = cy + p.y(), cz = cz + p.z(), ++count;
+    fv.push_back(std::move(*v));
+  }
+  point<FT> o(FT(cx / FT(static_cast<long>(count))), FT(cy / FT(static_cast<long>(count))),
+              FT(cz / FT(static_cast<long>(count))));
+  FT six(0);
+  for (auto const& v : fv) {
+    FT face(0); // 6 × signed volume of the pyramid from o over this face
+    for (std::size_t i = 1; i + 1 < v.size(); ++i) {
+      std::array<FT, 3> a{FT(v[0].x() - o.x()), FT(v[0].y() - o.y()), FT(v[0].z() - o.z())};
+      std::array<FT, 3> b{FT(v[i].x() - o.x()), FT(v[i].y() - o.y()), FT(v[i].z() - o.z())};
+      std::array<FT, 3> d{FT(v[i + 1].x() - o.x()), FT(v[i + 1].y() - o.y()), FT(v[i + 1].z() - o.z())};
+      face = face + det3(a, b, d);
+    }
+    six = six + (sign_of(face) == sign::negative ? FT(-face) : face);
+  }
+  return FT(six / FT(6));
+}
+
+/// @}
+
+} // namespace geometry::e3

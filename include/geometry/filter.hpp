@@ -1,0 +1,291 @@
+/// @file
+/// Filtered predicates: a predicate is written once, as a generic polynomial of
+/// the coordinates of a few homogeneous vectors, and evaluated first in
+/// `double` with a proven error bound; only when the sign is not certain is it
+/// evaluated again in exact arithmetic.
+///
+/// Every predicate here is the sign of a polynomial that is homogeneous in
+/// each argument vector (a projective predicate), so each exact vector may be
+/// replaced by any positive multiple.  Each `hvec` over an exact field caches
+/// the `double`s of its *integer* multiple (its coordinates times the least
+/// common multiple of their denominators), which gives two stages:
+///
+/// 1. **Exact in double.**  When every input coordinate is an integer below
+///    2^53 and so is `m` below (the polynomial evaluated on absolute values,
+///    see 2), every intermediate value is an integer below 2^53: the double
+///    evaluation is exact, zero included.
+/// 2. **Semi-static bound** (in the manner of Shewchuk and of CGAL's static
+///    filters, derived mechanically from the expression).  With unit roundoff
+///    `u = 2^-53` and `d` the number of roundings on the longest path of the
+///    expression — counted by evaluating it on counters, which the optimiser
+///    folds to a constant, each input counting two (its
+///    conversion truncates, with relative error below 2u) — the computed value
+///    `v` satisfies `|v − exact| ≤ γ_d · m ≤ 2·d·u·m` (Higham, *Accuracy and
+///    Stability of Numerical Algorithms*, §3.1).  Inputs are filtered only when
+///    their integer multiple is below 2^190 (others become NaN, which fails
+///    every comparison), and a predicate multiplies at most five coordinates,
+///    so nothing overflows; integers are at least 1, so nothing underflows.
+///    When `m == 0` every monomial is exactly zero, and so is the sign.
+///
+/// Only when both stages fail is the polynomial evaluated in exact arithmetic.
+#pragma once
+
+#include "number.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <type_traits>
+#include <utility>
+
+namespace geometry {
+
+/// Counters of filtered predicate evaluations on this thread.
+struct filter_statistics {
+  std::uint64_t evaluations = 0;  ///< filtered predicates evaluated
+  std::uint64_t fallbacks = 0;    ///< of these, how many needed exact arithmetic
+  std::size_t max_exact_bits = 0; ///< largest bit length seen by an exact evaluation (when tracked)
+};
+
+/// Switches of the filter on this thread (benchmarks and tests turn them).
+struct filter_settings {
+  bool enabled = true;     ///< false: every predicate is evaluated exactly ("always exact")
+  bool track_bits = false; ///< true: record the bit length of every exact input
+};
+
+/// This thread's counters.
+inline filter_statistics& filter_stats() noexcept {
+  thread_local filter_statistics s;
+  return s;
+}
+
+/// This thread's settings.
+inline filter_settings& filter_config() noexcept {
+  thread_local filter_settings s;
+  return s;
+}
+
+namespace detail {
+
+/// A double with the magnitude of the semi-static filter.
+struct sfloat {
+  double v; ///< value computed in double
+  double m; ///< the polynomial evaluated on absolute values
+};
+inline sfloat operator+(sfloat a, sfloat b) noexcept { return {a.v + b.v, a.m + b.m}; }
+inline sfloat operator-(sfloat a, sfloat b) noexcept { return {a.v - b.v, a.m + b.m}; }
+inline sfloat operator*(sfloat a, sfloat b) noexcept { return {a.v * b.v, a.m * b.m}; }
+inline sfloat operator-(sfloat a) noexcept { return {-a.v, a.m}; }
+
+struct no_approximation {
+  friend bool operator==(no_approximation, no_approximation) = default;
+};
+
+/// The filter's view of an exact vector: the doubles of its integer multiple.
+template <std::size_t N> struct approximation {
+  std::array<double, N> v{};
+  bool integral = true; ///< every double is its integer exactly
+  friend bool operator==(approximation const&, approximation const&) = default;
+};
+
+/// Fills `a` from the exact coordinates `c`.
+template <std::size_t N> void approximate(std::array<rational, N> const& c, approximation<N>& a) {
+  integer scale(1);
+  for (auto const& x : c) {
+    auto const* den = mpq_denref(x.backend().data());
+    if (mpz_cmp_ui(den, 1) != 0) mpz_lcm(scale.backend().data(), scale.backend().data(), den);
+  }
+  bool unit = scale == 1;
+  integer n;
+  a.integral = true;
+  for (std::size_t i = 0; i < N; ++i) {
+    auto const* q = c[i].backend().data();
+    mpz_srcptr num = mpq_numref(q);
+    if (!unit) {
+      mpz_divexact(n.backend().data(), scale.backend().data(), mpq_denref(q));
+      mpz_mul(n.backend().data(), n.backend().data(), mpq_numref(q));
+      num = n.backend().data();
+    }
+    std::size_t bits = mpz_sgn(num) == 0 ? 0 : mpz_sizeinbase(num, 2);
+    if (bits > 190) {
+      a.v[i] = std::numeric_limits<double>::quiet_NaN();
+      a.integral = false;
+      continue;
+    }
+    a.v[i] = mpz_get_d(num); // truncates: relative error below 2u
+    a.integral = a.integral && bits <= 53;
+  }
+}
+
+/// The integer multiple of an exact vector that the filter approximates.
+template <std::size_t N> std::array<integer, N> integer_multiple(std::array<rational, N> const& c) {
+  integer scale(1);
+  for (auto const& x : c) {
+    auto const* den = mpq_denref(x.backend().data());
+    if (mpz_cmp_ui(den, 1) != 0) mpz_lcm(scale.backend().data(), scale.backend().data(), den);
+  }
+  std::array<integer, N> r;
+  for (std::size_t i = 0; i < N; ++i) {
+    auto const* q = c[i].backend().data();
+    mpz_divexact(r[i].backend().data(), scale.backend().data(), mpq_denref(q));
+    mpz_mul(r[i].backend().data(), r[i].backend().data(), mpq_numref(q));
+  }
+  return r;
+}
+
+__extension__ using int128 = __int128; ///< exact when no value exceeds 2^126
+
+/// Bounds the bit length of an expression's values: inputs below 2^b.
+struct bits_counter {
+  int b = 0;
+};
+constexpr bits_counter operator+(bits_counter a, bits_counter b) { return {std::max(a.b, b.b) + 1}; }
+constexpr bits_counter operator-(bits_counter a, bits_counter b) { return {std::max(a.b, b.b) + 1}; }
+constexpr bits_counter operator*(bits_counter a, bits_counter b) { return {a.b + b.b}; }
+constexpr bits_counter operator-(bits_counter a) { return a; }
+
+template <std::size_t N> bool fits_int64(std::array<integer, N> const& a) {
+  return std::all_of(a.begin(), a.end(), [](integer const& x) { return mpz_fits_slong_p(x.backend().data()) != 0; });
+}
+template <std::size_t N> std::array<bits_counter, N> bits_of(std::array<integer, N> const& a) {
+  int b = 0;
+  for (auto const& x : a) b = std::max(b, static_cast<int>(mpz_sizeinbase(x.backend().data(), 2)));
+  std::array<bits_counter, N> r;
+  r.fill({b});
+  return r;
+}
+template <std::size_t N> std::array<int128, N> to_int128(std::array<integer, N> const& a) {
+  std::array<int128, N> r;
+  for (std::size_t i = 0; i < N; ++i) r[i] = mpz_get_si(a[i].backend().data());
+  return r;
+}
+
+/// The exact sign of `f` on integer vectors: in 128-bit integers when the
+/// values provably stay below 2^126, else in GMP integers.
+template <class F, std::size_t... N> sign integer_sign(F const& f, std::array<integer, N> const&... a) {
+  if ((fits_int64(a) && ...) && f(bits_of(a)...).b <= 126) {
+    int128 x = f(to_int128(a)...);
+    return x < 0 ? sign::negative : (x > 0 ? sign::positive : sign::zero);
+  }
+  return sign_of(f(a...));
+}
+
+/// Counts the filter's roundings of an expression at compile time.
+struct depth_counter {
+  int d = 2; ///< an input: its conversion to double
+};
+constexpr depth_counter operator+(depth_counter a, depth_counter b) { return {std::max(a.d, b.d) + 1}; }
+constexpr depth_counter operator-(depth_counter a, depth_counter b) { return {std::max(a.d, b.d) + 1}; }
+constexpr depth_counter operator*(depth_counter a, depth_counter b) { return {a.d + b.d + 1}; }
+constexpr depth_counter operator-(depth_counter a) { return a; }
+
+} // namespace detail
+
+/// A vector of `N` homogeneous coordinates — a point, a direction or a
+/// hyperplane's coefficients.  Over an exact field it caches the `double`
+/// approximations the filter starts from.
+template <number FT, std::size_t N> class hvec {
+public:
+  using value_type = FT;
+  static constexpr std::size_t size = N;
+
+  hvec() { refresh(); }
+  explicit hvec(std::array<FT, N> c) : c_(std::move(c)) { refresh(); }
+
+  FT const& operator[](std::size_t i) const noexcept { return c_[i]; }
+  std::array<FT, N> const& exact() const noexcept { return c_; }
+
+  /// The cached approximation (exact fields only).
+  detail::approximation<N> const& approx() const noexcept
+    requires exact_field<FT>
+  {
+    return a_;
+  }
+
+  hvec operator-() const {
+    std::array<FT, N> c;
+    for (std::size_t i = 0; i < N; ++i) c[i] = -c_[i];
+    return hvec(std::move(c));
+  }
+
+  bool is_zero() const {
+    return std::all_of(c_.begin(), c_.end(), [](FT const& x) { return sign_of(x) == sign::zero; });
+  }
+
+  friend bool operator==(hvec const& a, hvec const& b) { return a.c_ == b.c_; }
+
+private:
+  void refresh() {
+    if constexpr (exact_field<FT>) detail::approximate(c_, a_);
+  }
+
+  std::array<FT, N> c_{};
+  [[no_unique_address]] std::conditional_t<exact_field<FT>, detail::approximation<N>, detail::no_approximation> a_{};
+};
+
+namespace detail {
+
+template <std::size_t N> std::array<sfloat, N> to_sfloat(approximation<N> const& a) noexcept {
+  std::array<sfloat, N> r;
+  for (std::size_t i = 0; i < N; ++i) r[i] = {a.v[i], std::fabs(a.v[i])};
+  return r;
+}
+
+template <std::size_t N> void track_bits(std::array<rational, N> const& c) {
+  auto& s = filter_stats();
+  for (auto const& x : c) s.max_exact_bits = std::max(s.max_exact_bits, bit_length(x));
+}
+
+} // namespace detail
+
+/// The sign of `f(v...)`, where `f` is a lambda computing a
+/// polynomial, homogeneous in each argument, written generically over
+/// `std::array<T, N>` arguments with `+ − ×` only.  Over `double` it is
+/// evaluated once; over an exact field it is filtered, then exact.
+namespace detail {
+
+/// The rest of a filtered predicate once the fast comparison failed: certain
+/// zeros, the exact-in-double stage, then exact arithmetic.
+template <class F, std::size_t... N>
+[[gnu::noinline]] sign filtered_slow(F const& f, sfloat r, hvec<rational, N> const&... v) {
+  auto& stats = filter_stats();
+  if (filter_config().enabled) {
+    constexpr double two_53 = 9007199254740992.0;
+    if (r.m == 0.0) return sign::zero;
+    if ((v.approx().integral && ...) && r.m < two_53) return sign_of(r.v);
+  }
+  ++stats.fallbacks;
+  if (filter_config().track_bits) (track_bits(v.exact()), ...);
+  // Integer multiples again: integer arithmetic needs no gcd, unlike rationals.
+  return integer_sign(f, integer_multiple(v.exact())...);
+}
+
+} // namespace detail
+
+/// The sign of `f(v...)`, where `f` is a lambda computing a polynomial,
+/// homogeneous in each argument, written generically over `std::array<T, N>`
+/// arguments with `+ − ×` only.  Over `double` it is evaluated once; over an
+/// exact field it is filtered, then exact.
+template <class F, number FT, std::size_t... N>
+sign filtered_sign(F&& f, hvec<FT, N> const&... v) {
+  if constexpr (!exact_field<FT>) {
+    return sign_of(f(v.exact()...));
+  } else {
+    ++filter_stats().evaluations;
+    if (filter_config().enabled) [[likely]] {
+      // A constant the optimiser folds: f on depth counters.
+      int const depth = f(std::array<detail::depth_counter, N>{}...).d;
+      constexpr double u = std::numeric_limits<double>::epsilon() / 2;
+      detail::sfloat r = f(detail::to_sfloat(v.approx())...);
+      double bound = (2.0 * depth * u) * r.m;
+      if (r.v > bound) return sign::positive;
+      if (r.v < -bound) return sign::negative;
+      return detail::filtered_slow(f, r, v...);
+    }
+    return detail::filtered_slow(f, detail::sfloat{0.0, std::numeric_limits<double>::quiet_NaN()}, v...);
+  }
+}
+
+} // namespace geometry

@@ -1,0 +1,146 @@
+/// @file
+/// Small polynomial building blocks over `std::array<T, N>` — dot and cross
+/// products, determinants — written with `+ − ×` only so that one definition
+/// serves `double`, the filter's tracked doubles and exact rationals.  And the
+/// predicates and constructions shared by every geometry, on `hvec`.
+#pragma once
+
+#include "filter.hpp"
+
+#include <array>
+#include <cstddef>
+
+namespace geometry {
+
+template <class T, std::size_t N> constexpr T dot(std::array<T, N> const& a, std::array<T, N> const& b) {
+  T s = a[0] * b[0];
+  for (std::size_t i = 1; i < N; ++i) s = s + a[i] * b[i];
+  return s;
+}
+
+template <class T> constexpr std::array<T, 3> cross(std::array<T, 3> const& a, std::array<T, 3> const& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+template <class T> constexpr T det2(std::array<T, 2> const& a, std::array<T, 2> const& b) { return a[0] * b[1] - a[1] * b[0]; }
+
+template <class T> constexpr T det3(std::array<T, 3> const& a, std::array<T, 3> const& b, std::array<T, 3> const& c) {
+  return a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
+}
+
+/// @name Predicates on homogeneous vectors (filtered over exact fields)
+/// @{
+
+/// Sign of `a · b`: the side of a point `b` of a hyperplane `a`.
+template <number FT, std::size_t N> sign dot_sign(hvec<FT, N> const& a, hvec<FT, N> const& b) {
+  return filtered_sign([](auto const& x, auto const& y) { return dot(x, y); }, a, b);
+}
+
+/// Sign of the 2 × 2 determinant `|a b|`.
+template <number FT> sign det_sign(hvec<FT, 2> const& a, hvec<FT, 2> const& b) {
+  return filtered_sign([](auto const& x, auto const& y) { return det2(x, y); }, a, b);
+}
+
+/// Sign of the 3 × 3 determinant `|a b c|`.
+template <number FT> sign det_sign(hvec<FT, 3> const& a, hvec<FT, 3> const& b, hvec<FT, 3> const& c) {
+  return filtered_sign([](auto const& x, auto const& y, auto const& z) { return det3(x, y, z); }, a, b, c);
+}
+
+/// Whether `a` and `b` are positive (+1) or negative (−1) multiples of each
+/// other, or independent (0).  Both must be non-zero.
+template <number FT, std::size_t N> sign parallel(hvec<FT, N> const& a, hvec<FT, N> const& b) {
+  for (std::size_t i = 0; i < N; ++i)
+    for (std::size_t j = i + 1; j < N; ++j) {
+      auto minor = [i, j](auto const& x, auto const& y) { return x[i] * y[j] - x[j] * y[i]; };
+      if (filtered_sign(minor, a, b) != sign::zero) return sign::zero;
+    }
+  return dot_sign(a, b);
+}
+
+/// @}
+
+/// @name Exact constructions on homogeneous vectors
+/// @{
+
+template <number FT> hvec<FT, 3> cross(hvec<FT, 3> const& a, hvec<FT, 3> const& b) {
+  return hvec<FT, 3>(cross(a.exact(), b.exact()));
+}
+
+/// The coordinate eliminated when restricting to the hyperplane `p`: the one
+/// where `|p[k]|` is largest, so that the restriction is well conditioned.
+template <number FT, std::size_t N> std::size_t dominant_axis(hvec<FT, N> const& p) {
+  using std::abs;
+  std::size_t k = 0;
+  for (std::size_t i = 1; i < N; ++i)
+    if (abs(p[i]) > abs(p[k])) k = i;
+  return k;
+}
+
+namespace detail {
+/// Whether dropping coordinate `k` of the hyperplane `p` reverses orientation:
+/// then the first restricted coordinate is negated, so that for points `vᵢ` on
+/// `p`, `det(drop(v₁), …) ` has the sign of `det(p, v₁, …)` — counter-clockwise
+/// in restricted coordinates is counter-clockwise seen from `p`'s positive side.
+template <number FT, std::size_t N> bool restriction_flips(hvec<FT, N> const& p, std::size_t k) {
+  return (sign_of(p[k]) == sign::negative) != (k % 2 == 1);
+}
+} // namespace detail
+
+/// A hyperplane `b` of an N-coordinate space restricted to the hyperplane `p`,
+/// as a hyperplane of `p`'s own N−1 coordinates (coordinate `k` eliminated,
+/// orientation kept).  For every point `x` on `p`,
+/// `sign(restrict_to(p, k, b) · drop(p, k, x)) = sign(b · x)`.  Its degree is
+/// `deg p + deg b`: restricting input-derived hyperplanes keeps every
+/// predicate of bounded degree.
+template <number FT, std::size_t N>
+hvec<FT, N - 1> restrict_to(hvec<FT, N> const& p, std::size_t k, hvec<FT, N> const& b) {
+  std::array<FT, N - 1> r;
+  bool neg = sign_of(p[k]) == sign::negative;
+  for (std::size_t i = 0, j = 0; i < N; ++i) {
+    if (i == k) continue;
+    FT v = p[k] * b[i] - b[k] * p[i];
+    r[j++] = neg ? FT(-v) : v;
+  }
+  if (detail::restriction_flips(p, k)) r[0] = -r[0];
+  return hvec<FT, N - 1>(std::move(r));
+}
+
+/// The restricted coordinates of a point `x` on the hyperplane `p` (see `restrict_to`).
+template <number FT, std::size_t N> hvec<FT, N - 1> drop(hvec<FT, N> const& p, std::size_t k, hvec<FT, N> const& x) {
+  std::array<FT, N - 1> r;
+  for (std::size_t i = 0, j = 0; i < N; ++i)
+    if (i != k) r[j++] = x[i];
+  if (detail::restriction_flips(p, k)) r[0] = -r[0];
+  return hvec<FT, N - 1>(std::move(r));
+}
+
+/// The point of the hyperplane `p` whose restricted coordinates are `x`: the
+/// inverse of `drop`, up to a positive factor.
+template <number FT, std::size_t N>
+hvec<FT, N> lift(hvec<FT, N> const& p, std::size_t k, std::array<FT, N - 1> x) {
+  if (detail::restriction_flips(p, k)) x[0] = -x[0];
+  std::array<FT, N> r;
+  FT const& pk = p[k];
+  bool neg = sign_of(pk) == sign::negative;
+  FT s(0);
+  for (std::size_t i = 0, j = 0; i < N; ++i) {
+    if (i == k) continue;
+    r[i] = neg ? FT(-(pk * x[j])) : FT(pk * x[j]);
+    s = s + p[i] * x[j];
+    ++j;
+  }
+  r[k] = neg ? s : FT(-s);
+  return hvec<FT, N>(std::move(r));
+}
+
+/// A restricted vector seen from the opposite hyperplane `-p`: its first
+/// coordinate changes sign (see `restrict_to`).
+template <number FT, std::size_t M> hvec<FT, M> mirror(hvec<FT, M> const& r) {
+  auto c = r.exact();
+  c[0] = -c[0];
+  return hvec<FT, M>(std::move(c));
+}
+
+/// @}
+
+} // namespace geometry

@@ -1,0 +1,7 @@
+/// @file
+/// Everything of the geometry `geometry::s1`.
+#pragma once
+
+#include "s1/objects.hpp"
+#include "s1/predicates.hpp"
+#include "s1/constructions.hpp"

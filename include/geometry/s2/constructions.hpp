@@ -1,0 +1,147 @@
+/// @file
+/// Constructions of S2: circles from directions, arcs and polygons, splitting
+/// by a circle, and evaluation of implicit vertices for output.
+#pragma once
+
+#include "predicates.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace geometry::s2 {
+
+/// The circle through `a` and `b`, oriented from `a` to `b` along the minor
+/// arc (its positive side is to the left).  `a` and `b` must be independent.
+template <number FT> hyperplane<FT> circle_through(point<FT> const& a, point<FT> const& b, hyperplane_tag tag = no_tag) {
+  return hyperplane<FT>(cross(a, b), tag);
+}
+
+/// @name Polytopes
+/// @{
+
+template <number FT> polytope<FT> whole_sphere() { return {}; }
+template <number FT> polytope<FT> hemisphere(hyperplane<FT> const& h) { return {{h}}; }
+
+/// The convex polygon with the given vertices, counter-clockwise seen from
+/// outside the sphere (each vertex strictly left of the circle through the
+/// previous two).  Throws `std::invalid_argument` otherwise.
+template <number FT> polytope<FT> convex_polygon(std::vector<point<FT>> const& v) {
+  std::size_t n = v.size();
+  if (n < 3) throw std::invalid_argument("s2::convex_polygon needs at least 3 vertices");
+  polytope<FT> p;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (orientation(v[i], v[(i + 1) % n], v[(i + 2) % n]) != sign::positive)
+      throw std::invalid_argument("s2::convex_polygon: vertices are not strictly convex and counter-clockwise");
+    p.bounds.push_back(circle_through(v[i], v[(i + 1) % n]));
+  }
+  return p;
+}
+
+/// The parts of `c` on either side of `h`.
+template <number FT> split_result<polytope<FT>> split(polytope<FT> const& c, hyperplane<FT> const& h) {
+  auto r = detail::split_polygon(c.bounds, h, h.opposite());
+  split_result<polytope<FT>> out;
+  if (r.negative) out.negative = polytope<FT>{std::move(*r.negative)};
+  if (r.positive) out.positive = polytope<FT>{std::move(*r.positive)};
+  return out;
+}
+
+/// The vertices of `c` (none for the sphere and a hemisphere), exact and unnormalised.
+template <number FT> std::vector<point<FT>> vertices(polytope<FT> const& c) {
+  std::vector<point<FT>> out;
+  std::size_t k = c.bounds.size();
+  if (k < 2) return out;
+  for (std::size_t i = 0; i < k; ++i) out.push_back(cross(c.bounds[i].n, c.bounds[(i + 1) % k].n));
+  return out;
+}
+
+/// @}
+
+/// @name Arcs
+/// @{
+
+/// The whole circle `h` as a sub-hyperplane.
+template <number FT> sub_hyperplane<FT> whole_circle(hyperplane<FT> const& h) {
+  return {h, dominant_axis(h.n), {}};
+}
+
+/// The same point set with the opposite orientation.
+template <number FT> sub_hyperplane<FT> opposite(sub_hyperplane<FT> const& s) {
+  return {s.support.opposite(), s.axis, mirrored(s.bounds)};
+}
+
+/// The parts of the arc `s` on either side of `h`, or its coincidence with `h`.
+template <number FT> split_result<sub_hyperplane<FT>> split(sub_hyperplane<FT> const& s, hyperplane<FT> const& h) {
+  split_result<sub_hyperplane<FT>> out;
+  out.coincident = parallel(s.support.n, h.n);
+  if (out.is_coincident()) return out;
+  auto r = restrict_to(s.support.n, s.axis, h.n);
+  arc_bound<FT> hp{h, r}, hn{h.opposite(), -r};
+  auto parts = detail::split_arc(s.bounds, hp, hn);
+  if (parts.negative) out.negative = sub_hyperplane<FT>{s.support, s.axis, std::move(*parts.negative)};
+  if (parts.positive) out.positive = sub_hyperplane<FT>{s.support, s.axis, std::move(*parts.positive)};
+  return out;
+}
+
+/// The minor arc from `a` to `b` (independent directions), on `circle_through(a, b)`.
+template <number FT> sub_hyperplane<FT> arc(point<FT> const& a, point<FT> const& b, hyperplane_tag tag = no_tag) {
+  auto c = circle_through(a, b, tag);
+  // Circles through a (and b) perpendicular to c, keeping the other endpoint.
+  hyperplane<FT> through_a(cross(c.n, a)), through_b(cross(b, c.n));
+  auto s = split(whole_circle(c), through_a).positive;
+  return *split(*s, through_b).positive;
+}
+
+
+/// The endpoints of an arc: none for a whole circle, else start and end
+/// (exact, unnormalised; for a half circle they are antipodal).
+template <number FT> std::vector<point<FT>> endpoints(sub_hyperplane<FT> const& s) {
+  std::vector<point<FT>> out;
+  if (s.bounds.empty()) return out;
+  auto const& b0 = s.bounds.front().line();
+  auto const& b1 = s.bounds.back().line();
+  out.push_back(lift(s.support.n, s.axis, {b0[1], FT(-b0[0])}));
+  out.push_back(lift(s.support.n, s.axis, {FT(-b1[1]), b1[0]}));
+  return out;
+}
+
+/// @}
+
+/// @name Measures and output (double)
+/// @{
+
+/// A unit vector of `p`, in double, for output.
+template <number FT> std::array<double, 3> to_unit(point<FT> const& p) {
+  std::array<double, 3> d{to_double(p[0]), to_double(p[1]), to_double(p[2])};
+  double l = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  return {d[0] / l, d[1] / l, d[2] / l};
+}
+
+/// Angle between two directions, well conditioned at 0 and π.
+inline double angle_between(std::array<double, 3> const& a, std::array<double, 3> const& b) {
+  auto c = cross(a, b);
+  return std::atan2(std::sqrt(dot(c, c)), dot(a, b));
+}
+
+/// Area of the polytope in steradians (Gauss–Bonnet: 2π minus the turning angles).
+template <number FT> double area(polytope<FT> const& c) {
+  std::size_t k = c.bounds.size();
+  if (k == 0) return 4 * std::numbers::pi;
+  double turn = 0;
+  for (std::size_t i = 0; i < k; ++i)
+    if (k > 1) turn += angle_between(to_unit(c.bounds[i].n), to_unit(c.bounds[(i + 1) % k].n));
+  return 2 * std::numbers::pi - turn;
+}
+
+/// Length of the arc in radians.
+template <number FT> double length(sub_hyperplane<FT> const& s) {
+  if (s.bounds.empty()) return 2 * std::numbers::pi;
+  if (s.bounds.size() == 1) return std::numbers::pi;
+  auto e = endpoints(s);
+  return angle_between(to_unit(e[0]), to_unit(e[1]));
+}
+
+/// @}
+
+} // namespace geometry::s2

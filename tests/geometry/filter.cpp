@@ -1,0 +1,186 @@
+// Filtered predicates: plain double gets near-degenerate signs wrong, the
+// filtered exact kernel never does, and it falls back to exact arithmetic only
+// when it has to.
+#include "support.hpp"
+
+#include <catch2/catch.hpp>
+#include <geometry/geometry.hpp>
+
+using namespace geometry;
+using test::Q;
+
+namespace {
+
+struct counts {
+  int compared = 0, double_wrong = 0, filtered_wrong = 0;
+};
+
+std::array<Q, 3> q3(double a, double b, double c) { return {Q(a), Q(b), Q(c)}; }
+
+} // namespace
+
+TEST_CASE("E2: points 1 ulp off a line", "[filter][e2]") {
+  // The classic orientation experiment (Kettner et al.): a grid of points
+  // ulps away from (0.5, 0.5), against the line through (12, 12) and (24, 24).
+  counts c;
+  auto const s0 = filter_stats();
+  for (int i = 0; i < 64; ++i)
+    for (int j = 0; j < 64; ++j) {
+      double px = test::up(0.5, i), py = test::up(0.5, j);
+      Q truth = test::ref_det3(q3(12, 12, 1), q3(24, 24, 1), q3(px, py, 1));
+      auto d = e2::orientation<double>({12, 12}, {24, 24}, {px, py});
+      auto f = e2::orientation<Q>({Q(12), Q(12)}, {Q(24), Q(24)}, {Q(px), Q(py)});
+      ++c.compared;
+      c.double_wrong += static_cast<int>(d) != truth.sign();
+      c.filtered_wrong += static_cast<int>(f) != truth.sign();
+    }
+  auto const s1 = filter_stats();
+  INFO("compared " << c.compared << ", double wrong " << c.double_wrong);
+  CHECK(c.double_wrong > 0);
+  CHECK(c.filtered_wrong == 0);
+  CHECK(s1.fallbacks > s0.fallbacks); // the filter did hand over
+  // … but only where it has to: a point clearly off the line is decided in double.
+  CHECK(e2::orientation<Q>({Q(12), Q(12)}, {Q(24), Q(24)}, {Q(0.5), Q(0.75)}) == sign::positive);
+  CHECK(filter_stats().fallbacks == s1.fallbacks);
+  CHECK(filter_stats().evaluations == s1.evaluations + 1);
+}
+
+TEST_CASE("E3: points 1 ulp off a plane", "[filter][e3]") {
+  // Points of a plane through three random decimal points, moved up to 2 ulps in z.
+  counts c;
+  for (int t = 0; t < 400; ++t) {
+    std::array<Q, 3> a{test::random_decimal(3, 10), test::random_decimal(3, 10), test::random_decimal(3, 10)};
+    std::array<Q, 3> b{test::random_decimal(3, 10), test::random_decimal(3, 10), test::random_decimal(3, 10)};
+    std::array<Q, 3> d{test::random_decimal(3, 10), test::random_decimal(3, 10), test::random_decimal(3, 10)};
+    auto n = test::ref_cross({b[0] - a[0], b[1] - a[1], b[2] - a[2]}, {d[0] - a[0], d[1] - a[1], d[2] - a[2]});
+    if (n[2] == 0) continue;
+    // The point of the plane above (x, y) = random, rounded to doubles, then nudged.
+    double x = test::random_decimal(3, 10).convert_to<double>(), y = test::random_decimal(3, 10).convert_to<double>();
+    Q z = a[2] - (n[0] * (Q(x) - a[0]) + n[1] * (Q(y) - a[1])) / n[2];
+    double zd = test::up(z.convert_to<double>(), static_cast<int>(test::uniform(-2, 2)) + 2);
+    zd = test::down(zd, 2);
+    Q truth = test::ref_dot(n, {Q(x) - a[0], Q(y) - a[1], Q(zd) - a[2]});
+    auto pd = [](std::array<Q, 3> const& v) { return e3::point<double>(v[0].convert_to<double>(), v[1].convert_to<double>(), v[2].convert_to<double>()); };
+    auto pq = [](std::array<Q, 3> const& v) { return e3::point<Q>(v[0], v[1], v[2]); };
+    auto hd = e3::plane_through(pd(a), pd(b), pd(d));
+    auto hq = e3::plane_through(pq(a), pq(b), pq(d));
+    auto sd = e3::side(hd, e3::point<double>(x, y, zd));
+    auto sq = e3::side(hq, e3::point<Q>(Q(x), Q(y), Q(zd)));
+    // The double kernel sees the decimal input rounded; the truth is about the exact input.
+    ++c.compared;
+    c.double_wrong += static_cast<int>(sd) != truth.sign();
+    c.filtered_wrong += static_cast<int>(sq) != truth.sign();
+  }
+  INFO("compared " << c.compared << ", double wrong " << c.double_wrong);
+  CHECK(c.compared > 300);
+  CHECK(c.double_wrong > 0);
+  CHECK(c.filtered_wrong == 0);
+}
+
+TEST_CASE("S2: the circle through nearly antipodal directions", "[filter][s2]") {
+  counts c;
+  for (int t = 0; t < 400; ++t) {
+    double ax = test::random_decimal(4, 1).convert_to<double>() + 2, ay = test::random_decimal(4, 1).convert_to<double>(),
+           az = test::random_decimal(4, 1).convert_to<double>();
+    // b is -a moved by a few ulps: the circle through a and b is barely determined.
+    double bx = -test::up(ax, static_cast<int>(test::uniform(1, 3))), by = -test::down(ay, static_cast<int>(test::uniform(0, 3))),
+           bz = -az;
+    // Directions near the circle: a perpendicular-ish direction, nudged.
+    double rx = test::up(ay, static_cast<int>(test::uniform(0, 4))), ry = -ax, rz = test::down(az * 0.5, static_cast<int>(test::uniform(0, 4)));
+    auto n = test::ref_cross(q3(ax, ay, az), q3(bx, by, bz));
+    Q truth = test::ref_dot(n, q3(rx, ry, rz));
+    using PD = s2::point<double>;
+    using PQ = s2::point<Q>;
+    auto sd = s2::side(s2::circle_through(PD({ax, ay, az}), PD({bx, by, bz})), PD({rx, ry, rz}));
+    auto sq = s2::side(s2::circle_through(PQ(q3(ax, ay, az)), PQ(q3(bx, by, bz))), PQ(q3(rx, ry, rz)));
+    ++c.compared;
+    c.double_wrong += static_cast<int>(sd) != truth.sign();
+    c.filtered_wrong += static_cast<int>(sq) != truth.sign();
+  }
+  INFO("compared " << c.compared << ", double wrong " << c.double_wrong);
+  CHECK(c.double_wrong > 0);
+  CHECK(c.filtered_wrong == 0);
+}
+
+TEST_CASE("S2 and E2: the vertex of nearly coincident circles", "[filter][s2]") {
+  counts c;
+  for (int t = 0; t < 400; ++t) {
+    std::array<double, 3> n1{test::random_decimal(3, 1).convert_to<double>(), test::random_decimal(3, 1).convert_to<double>(), 1.0};
+    std::array<double, 3> n2{test::up(n1[0], static_cast<int>(test::uniform(1, 4))), test::down(n1[1], static_cast<int>(test::uniform(0, 4))), 1.0};
+    // A third circle through (almost) the vertex n1 × n2.
+    auto v = test::ref_cross(q3(n1[0], n1[1], n1[2]), q3(n2[0], n2[1], n2[2]));
+    double vx = v[0].convert_to<double>(), vy = v[1].convert_to<double>(), vz = v[2].convert_to<double>();
+    std::array<double, 3> h{test::up(vy, static_cast<int>(test::uniform(0, 2))), -vx, test::random_decimal(2, 1).convert_to<double>() * vz};
+    Q truth = test::ref_det3(q3(n1[0], n1[1], n1[2]), q3(n2[0], n2[1], n2[2]), q3(h[0], h[1], h[2]));
+    using HD = s2::hyperplane<double>;
+    using HQ = s2::hyperplane<Q>;
+    auto sd = s2::side_of_vertex(HD(hvec<double, 3>(n1)), HD(hvec<double, 3>(n2)), HD(hvec<double, 3>(h)));
+    auto sq = s2::side_of_vertex(HQ(hvec<Q, 3>(q3(n1[0], n1[1], n1[2]))), HQ(hvec<Q, 3>(q3(n2[0], n2[1], n2[2]))),
+                                 HQ(hvec<Q, 3>(q3(h[0], h[1], h[2]))));
+    ++c.compared;
+    c.double_wrong += static_cast<int>(sd) != truth.sign();
+    c.filtered_wrong += static_cast<int>(sq) != truth.sign();
+  }
+  INFO("compared " << c.compared << ", double wrong " << c.double_wrong);
+  CHECK(c.double_wrong > 0);
+  CHECK(c.filtered_wrong == 0);
+}
+
+TEST_CASE("the filter certifies exact zeros without exact arithmetic when every monomial vanishes", "[filter]") {
+  auto s0 = filter_stats();
+  hvec<Q, 3> a(std::array<Q, 3>{Q(1), Q(0), Q(0)}), b(std::array<Q, 3>{Q(0), Q(1), Q(0)});
+  CHECK(dot_sign(a, b) == sign::zero);
+  auto s1 = filter_stats();
+  CHECK(s1.evaluations == s0.evaluations + 1);
+  CHECK(s1.fallbacks == s0.fallbacks);
+}
+
+TEST_CASE("switching the filter off makes every evaluation exact, with the same signs", "[filter]") {
+  std::vector<std::array<Q, 3>> v;
+  for (int i = 0; i < 300; ++i) v.push_back({test::random_decimal(), test::random_decimal(), test::random_decimal()});
+  std::vector<sign> on, off;
+  for (std::size_t i = 0; i + 2 < v.size(); ++i)
+    on.push_back(det_sign(hvec<Q, 3>(v[i]), hvec<Q, 3>(v[i + 1]), hvec<Q, 3>(v[i + 2])));
+  filter_config().enabled = false;
+  auto s0 = filter_stats();
+  for (std::size_t i = 0; i + 2 < v.size(); ++i)
+    off.push_back(det_sign(hvec<Q, 3>(v[i]), hvec<Q, 3>(v[i + 1]), hvec<Q, 3>(v[i + 2])));
+  auto s1 = filter_stats();
+  filter_config().enabled = true;
+  CHECK(on == off);
+  CHECK(s1.fallbacks - s0.fallbacks == off.size());
+}
+
+TEST_CASE("numbers outside the filter's range go exact and stay right", "[filter]") {
+  Q huge = Q(boost::multiprecision::mpz_int(1) << 300), tiny = Q(1) / huge;
+  hvec<Q, 2> a(std::array<Q, 2>{huge, Q(1)}), b(std::array<Q, 2>{tiny, Q(-1)});
+  auto s0 = filter_stats();
+  CHECK(dot_sign(a, b) == sign::zero); // huge·tiny − 1 = 0
+  CHECK(filter_stats().fallbacks == s0.fallbacks + 1);
+}
+
+TEST_CASE("every exact stage gives the true sign: double, 128-bit and GMP integers, rationals", "[filter]") {
+  // Degenerate triples c = a + b (determinant 0) and nudged ones (±1 in one
+  // coordinate), with integers of 20, 40 and 70 bits and with fractions, so
+  // that each stage of the exact evaluation is taken.
+  for (int bits : {20, 40, 70}) {
+    for (bool fractions : {false, true}) {
+      int wrong = 0, total = 0;
+      auto big = [&] {
+        test::Q x(boost::multiprecision::mpz_int(test::uniform(1, 1000000)) << (bits - 20));
+        return fractions ? test::Q(x / test::Q(test::uniform(1, 97))) : x;
+      };
+      for (int t = 0; t < 200; ++t) {
+        std::array<Q, 3> a{big(), big(), big()}, b{big(), big(), big()};
+        std::array<Q, 3> c{a[0] + b[0], a[1] + b[1], a[2] + b[2]};
+        if (t % 2) c[static_cast<std::size_t>(t % 3)] += (t % 4 == 1 ? 1 : -1);
+        Q truth = test::ref_det3(a, b, c);
+        ++total;
+        wrong += static_cast<int>(det_sign(hvec<Q, 3>(a), hvec<Q, 3>(b), hvec<Q, 3>(c))) != truth.sign();
+      }
+      INFO(bits << " bits, fractions " << fractions);
+      CHECK(total == 200);
+      CHECK(wrong == 0);
+    }
+  }
+}
