@@ -5,3 +5,4 @@
 #include "e1/objects.hpp"
 #include "e1/predicates.hpp"
 #include "e1/constructions.hpp"
+#include "e1/kernel.hpp"

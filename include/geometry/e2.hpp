@@ -5,3 +5,4 @@
 #include "e2/objects.hpp"
 #include "e2/predicates.hpp"
 #include "e2/constructions.hpp"
+#include "e2/kernel.hpp"

@@ -5,3 +5,4 @@
 #include "e3/objects.hpp"
 #include "e3/predicates.hpp"
 #include "e3/constructions.hpp"
+#include "e3/kernel.hpp"

@@ -5,3 +5,4 @@
 #include "s1/objects.hpp"
 #include "s1/predicates.hpp"
 #include "s1/constructions.hpp"
+#include "s1/kernel.hpp"

@@ -5,3 +5,4 @@
 #include "s2/objects.hpp"
 #include "s2/predicates.hpp"
 #include "s2/constructions.hpp"
+#include "s2/kernel.hpp"

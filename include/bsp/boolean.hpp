@@ -1,0 +1,103 @@
+/// @file
+/// Set operations by tree merging (Naylor, Amanatides and Thibault, "Merging
+/// BSP trees yields polyhedral set operations", SIGGRAPH 1990), generic over
+/// the geometry and the label type.
+///
+/// `merge(a, b, op)` keeps the structure of `a` and grafts, at each leaf of
+/// `a`, the part of `b` inside that leaf's cell: `b`'s nodes whose hyperplane
+/// does not cut the cell are skipped (the cell is split exactly by the
+/// geometry), so the result has no empty cells.  Leaf labels become
+/// `op(label of a, label of b)`; the result is then reduced.
+#pragma once
+
+#include "point_set.hpp"
+
+#include <functional>
+#include <type_traits>
+
+namespace bsp {
+
+/// Merges two labellings of the same space: each point gets `op(a(p), b(p))`.
+template <geometry G, label LA, label LB, class Op, class R = std::invoke_result_t<Op&, LA const&, LB const&>>
+  requires label<R>
+point_set<G, R> merge(point_set<G, LA> const& a, point_set<G, LB> const& b, Op op) {
+  using P = typename G::polytope;
+  point_set<G, R> out;
+  // Work items: a node of `a` with its cell, or a node of `b` inside the cell
+  // of a leaf of `a` (whose label is `la`); each builds a node of `out` and
+  // attaches it under `parent` on `side`.
+  struct item {
+    bool in_b;
+    node_id n;
+    P cell;
+    node_id parent;
+    int side;
+    LA la;
+  };
+  std::vector<item> stack;
+  stack.push_back({false, a.root(), G::whole_space(), node_id{}, 0, LA{}});
+  while (!stack.empty()) {
+    item w = std::move(stack.back());
+    stack.pop_back();
+    if (!w.in_b && a.is_leaf(w.n)) {
+      LA la = a.leaf_data(w.n);
+      if constexpr (std::is_same_v<LB, bool>) {
+        // A label that decides the result alone (union with inside …) ends here.
+        R f = op(la, false), t = op(la, true);
+        if (f == t) {
+          out.attach(w.parent, w.side, out.add_leaf(f));
+          continue;
+        }
+      }
+      stack.push_back({true, b.root(), std::move(w.cell), w.parent, w.side, std::move(la)});
+      continue;
+    }
+    if (w.in_b && b.is_leaf(w.n)) {
+      out.attach(w.parent, w.side, out.add_leaf(op(w.la, b.leaf_data(w.n))));
+      continue;
+    }
+    auto const& tr = w.in_b ? b.splitter(w.n) : a.splitter(w.n);
+    node_id neg = w.in_b ? b.negative(w.n) : a.negative(w.n);
+    node_id pos = w.in_b ? b.positive(w.n) : a.positive(w.n);
+    auto r = G::split(w.cell, tr);
+    if (!r.negative || !r.positive) {
+      // The hyperplane misses the cell: only one side matters here.
+      stack.push_back({w.in_b, r.negative ? neg : pos, std::move(r.negative ? *r.negative : *r.positive), w.parent,
+                       w.side, std::move(w.la)});
+      continue;
+    }
+    node_id n = out.add_interior(tr, node_id{}, node_id{});
+    out.attach(w.parent, w.side, n);
+    stack.push_back({w.in_b, neg, std::move(*r.negative), n, -1, w.la});
+    stack.push_back({w.in_b, pos, std::move(*r.positive), n, +1, std::move(w.la)});
+  }
+  return reduce(out);
+}
+
+/// @name Set operations on regular sets (`true` inside)
+/// @{
+template <geometry G> point_set<G, bool> set_union(point_set<G, bool> const& a, point_set<G, bool> const& b) {
+  return merge(a, b, [](bool x, bool y) { return x || y; });
+}
+template <geometry G> point_set<G, bool> set_intersection(point_set<G, bool> const& a, point_set<G, bool> const& b) {
+  return merge(a, b, [](bool x, bool y) { return x && y; });
+}
+template <geometry G> point_set<G, bool> set_difference(point_set<G, bool> const& a, point_set<G, bool> const& b) {
+  return merge(a, b, [](bool x, bool y) { return x && !y; });
+}
+template <geometry G>
+point_set<G, bool> set_symmetric_difference(point_set<G, bool> const& a, point_set<G, bool> const& b) {
+  return merge(a, b, [](bool x, bool y) { return x != y; });
+}
+/// The same tree with every label replaced by `f(label)`.
+template <geometry G, label L, class F, class R = std::invoke_result_t<F&, L const&>>
+point_set<G, R> relabel(point_set<G, L> const& t, F f) {
+  return merge(t, point_set<G, bool>(false), [&](L const& x, bool) { return f(x); });
+}
+/// Everything not in `a`.
+template <geometry G> point_set<G, bool> complement(point_set<G, bool> const& a) {
+  return relabel(a, [](bool x) { return !x; });
+}
+/// @}
+
+} // namespace bsp

@@ -1,0 +1,249 @@
+/// @file
+/// Point-set trees: regular sets (and labelled partitions) as BSP trees with
+/// labels at the leaves.  Build from a boundary (Thibault and Naylor 1987),
+/// classify points, list the cells, extract the boundary, reduce.
+#pragma once
+
+#include "concepts/label.hpp"
+#include "splitter.hpp"
+#include "tree.hpp"
+
+#include <optional>
+#include <utility>
+#include <vector>
+
+namespace bsp {
+
+/// A point-set tree over `G` with labels `L` at its leaves.
+template <geometry G, label L = bool> using point_set = tree<G, none, L>;
+
+/// Builds the point-set tree of a region from its boundary: sub-hyperplanes
+/// oriented with the region on their *negative* side (outward normals), as a
+/// closed polygon mesh has them when its faces turn counter-clockwise seen from
+/// outside.  Cells behind a boundary piece get `inside`, the others `outside`.
+/// The boundary must be closed and consistently oriented; pieces may touch and
+/// share vertices, edges and faces.
+template <geometry G, label L = bool, class Policy = input_order>
+point_set<G, L> build_point_set(std::vector<typename G::sub_hyperplane> boundary, L inside = L(true),
+                                L outside = L(false), Policy policy = {}) {
+  using S = typename G::sub_hyperplane;
+  point_set<G, L> t(outside);
+  struct work {
+    std::vector<S> pieces;
+    node_id parent;
+    int side;
+    L empty;
+  };
+  std::vector<work> stack;
+  stack.push_back({std::move(boundary), node_id{}, 0, outside});
+  while (!stack.empty()) {
+    work w = std::move(stack.back());
+    stack.pop_back();
+    if (w.pieces.empty()) {
+      t.attach(w.parent, w.side, t.add_leaf(w.empty));
+      continue;
+    }
+    auto h = G::supporting(w.pieces[policy.template choose<G>(w.pieces, [](S const& s) -> S const& { return s; })]);
+    std::vector<S> neg, pos;
+    for (auto const& s : w.pieces) {
+      auto r = G::split(s, h);
+      if (r.negative) neg.push_back(std::move(*r.negative));
+      if (r.positive) pos.push_back(std::move(*r.positive));
+    }
+    node_id n = t.add_interior(h, node_id{}, node_id{});
+    t.attach(w.parent, w.side, n);
+    stack.push_back({std::move(neg), n, -1, inside});
+    stack.push_back({std::move(pos), n, +1, outside});
+  }
+  return t;
+}
+
+/// The label at `p`, or nothing when `p` lies on the boundary between
+/// differently labelled cells.
+template <geometry G, class N, label L>
+std::optional<L> classify(tree<G, N, L> const& t, typename G::point const& p, node_id from) {
+  node_id n = from;
+  while (!t.is_leaf(n)) {
+    int s = static_cast<int>(G::side(t.splitter(n), p));
+    if (s == 0) {
+      auto a = classify(t, p, t.negative(n));
+      auto b = classify(t, p, t.positive(n));
+      return a == b ? a : std::nullopt;
+    }
+    n = t.child(n, s);
+  }
+  return t.leaf_data(n);
+}
+
+template <geometry G, class N, label L> std::optional<L> classify(tree<G, N, L> const& t, typename G::point const& p) {
+  return classify(t, p, t.root());
+}
+
+/// A leaf's cell: a convex polytope and the leaf.
+template <geometry G> struct cell {
+  typename G::polytope region;
+  node_id leaf;
+};
+
+/// The cells of all leaves reachable from the root (leaves whose cell has no
+/// interior are left out).
+template <geometry G, class N, class L> std::vector<cell<G>> cells(tree<G, N, L> const& t) {
+  std::vector<cell<G>> out;
+  std::vector<std::pair<node_id, typename G::polytope>> stack;
+  stack.emplace_back(t.root(), G::whole_space());
+  while (!stack.empty()) {
+    auto [n, c] = std::move(stack.back());
+    stack.pop_back();
+    if (t.is_leaf(n)) {
+      out.push_back({std::move(c), n});
+      continue;
+    }
+    auto r = G::split(c, t.splitter(n));
+    if (r.negative) stack.emplace_back(t.negative(n), std::move(*r.negative));
+    if (r.positive) stack.emplace_back(t.positive(n), std::move(*r.positive));
+  }
+  return out;
+}
+
+/// The total measure (length, area, volume …, as `G::measure` gives it) of the
+/// cells labelled `which`; nothing when one of them is unbounded.
+template <geometry G, class N, label L>
+auto measure(tree<G, N, L> const& t, L const& which) -> decltype(G::measure(std::declval<typename G::polytope>())) {
+  using M = decltype(G::measure(std::declval<typename G::polytope>()));
+  if constexpr (requires(M m) { m.has_value(); }) {
+    typename M::value_type sum(0);
+    for (auto const& c : cells(t)) {
+      if (!(t.leaf_data(c.leaf) == which)) continue;
+      auto m = G::measure(c.region);
+      if (!m) return std::nullopt;
+      sum = sum + *m;
+    }
+    return sum;
+  } else {
+    M sum(0);
+    for (auto const& c : cells(t))
+      if (t.leaf_data(c.leaf) == which) sum = sum + G::measure(c.region);
+    return sum;
+  }
+}
+
+/// A piece of the boundary between differently labelled cells: it lies in a
+/// node's hyperplane and keeps that orientation; `negative` and `positive` are
+/// the labels on its two sides.
+template <geometry G, label L> struct boundary_piece {
+  typename G::sub_hyperplane piece;
+  L negative, positive;
+};
+
+namespace detail {
+
+/// The pieces of `s` (lying in a hyperplane h) as seen from the side `probe`
+/// (−1, +1) of h, pushed down the subtree at `n`, with the labels they meet.
+template <geometry G, class N, label L>
+void push_down(tree<G, N, L> const& t, typename G::sub_hyperplane s, node_id n, int probe,
+               std::vector<std::pair<typename G::sub_hyperplane, L>>& out) {
+  std::vector<std::pair<typename G::sub_hyperplane, node_id>> stack{{std::move(s), n}};
+  while (!stack.empty()) {
+    auto [piece, m] = std::move(stack.back());
+    stack.pop_back();
+    if (t.is_leaf(m)) {
+      out.emplace_back(std::move(piece), t.leaf_data(m));
+      continue;
+    }
+    auto r = G::split(piece, t.splitter(m));
+    if (r.is_coincident()) {
+      // Lying in m's hyperplane: the side probed decides the child.
+      stack.emplace_back(std::move(piece), t.child(m, probe * static_cast<int>(r.coincident)));
+      continue;
+    }
+    if (r.negative) stack.emplace_back(std::move(*r.negative), t.negative(m));
+    if (r.positive) stack.emplace_back(std::move(*r.positive), t.positive(m));
+  }
+}
+
+} // namespace detail
+
+/// The boundary of the labelling: every piece of a node's hyperplane, within
+/// the node's cell, whose two sides carry different labels.
+template <geometry G, class N, label L> std::vector<boundary_piece<G, L>> boundary(tree<G, N, L> const& t) {
+  using S = typename G::sub_hyperplane;
+  using H = typename G::hyperplane;
+  std::vector<boundary_piece<G, L>> out;
+  // Each node with the hyperplanes of its ancestors, oriented towards it.
+  std::vector<std::pair<node_id, std::vector<H>>> stack{{t.root(), {}}};
+  while (!stack.empty()) {
+    auto [n, path] = std::move(stack.back());
+    stack.pop_back();
+    if (t.is_leaf(n)) continue;
+    auto const& h = t.splitter(n);
+    std::optional<S> section = G::whole(h);
+    for (auto const& g : path) {
+      auto r = G::split(*section, g);
+      section = r.positive;
+      if (!section) break;
+    }
+    if (section) {
+      std::vector<std::pair<S, L>> below, across;
+      detail::push_down(t, std::move(*section), t.negative(n), -1, below);
+      for (auto& [piece, lneg] : below) {
+        across.clear();
+        detail::push_down(t, std::move(piece), t.positive(n), +1, across);
+        for (auto& [p, lpos] : across)
+          if (!(lneg == lpos)) out.push_back({std::move(p), lneg, lpos});
+      }
+    }
+    auto neg_path = path;
+    neg_path.push_back(G::opposite(h));
+    path.push_back(h);
+    stack.emplace_back(t.negative(n), std::move(neg_path));
+    stack.emplace_back(t.positive(n), std::move(path));
+  }
+  return out;
+}
+
+/// The boundary of a set (`true` inside) as sub-hyperplanes with the set on
+/// their negative side: the input form of `build_point_set`.
+template <geometry G, class N> std::vector<typename G::sub_hyperplane> oriented_boundary(tree<G, N, bool> const& t) {
+  std::vector<typename G::sub_hyperplane> out;
+  for (auto& b : boundary(t)) out.push_back(b.negative ? std::move(b.piece) : G::opposite(b.piece));
+  return out;
+}
+
+/// The same labelling with every interior node whose two children are leaves
+/// with equal labels collapsed into one leaf, repeatedly; unreachable nodes are dropped.
+template <geometry G, class N, label L> tree<G, N, L> reduce(tree<G, N, L> const& t) {
+  tree<G, N, L> out;
+  // Post-order: the new node of each old node, built after both children.
+  struct item {
+    node_id old;
+    bool expanded;
+  };
+  std::vector<item> stack{{t.root(), false}};
+  std::vector<node_id> built; // results, as a stack
+  while (!stack.empty()) {
+    auto [n, expanded] = stack.back();
+    stack.pop_back();
+    if (t.is_leaf(n)) {
+      built.push_back(out.add_leaf(t.leaf_data(n)));
+      continue;
+    }
+    if (!expanded) {
+      stack.push_back({n, true});
+      stack.push_back({t.positive(n), false});
+      stack.push_back({t.negative(n), false});
+      continue;
+    }
+    node_id pos = built.back();
+    built.pop_back();
+    node_id neg = built.back();
+    built.pop_back();
+    if (out.is_leaf(neg) && out.is_leaf(pos) && out.leaf_data(neg) == out.leaf_data(pos))
+      built.push_back(neg);
+    else
+      built.push_back(out.add_interior(t.splitter(n), neg, pos, t.node_data(n)));
+  }
+  out.set_root(built.back());
+  return out;
+}
+
+} // namespace bsp

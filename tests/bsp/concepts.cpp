@@ -1,0 +1,88 @@
+// The concepts, checked on every model and against types that must not model them.
+#include "archetype.hpp"
+
+#include <bsp/bsp.hpp>
+#include <catch2/catch.hpp>
+#include <geometry/geometry.hpp>
+
+#include <string>
+
+namespace {
+
+// Every geometry, in both number types.
+template <class FT> constexpr bool all_models() {
+  return bsp::geometry<geometry::e1::kernel<FT>> && bsp::geometry<geometry::e2::kernel<FT>> &&
+         bsp::geometry<geometry::e3::kernel<FT>> && bsp::geometry<geometry::s1::kernel<FT>> &&
+         bsp::geometry<geometry::s2::kernel<FT>>;
+}
+static_assert(all_models<double>());
+static_assert(all_models<geometry::rational>());
+static_assert(bsp::geometry<archetype::line>);
+static_assert(bsp::cell_space<archetype::line> && bsp::oriented_space<archetype::line>);
+
+// A look-alike that has every member but did not opt in.
+struct look_alike : archetype::line {};
+static_assert(!bsp::geometry<look_alike>);
+static_assert(bsp::cell_space<look_alike>); // the structural parts hold …
+
+// … and types missing a part.
+struct no_split {
+  using point = long;
+  using hyperplane = archetype::line::hyperplane;
+  static int side(hyperplane const&, point) { return 1; }
+  static hyperplane opposite(hyperplane const& h) { return h; }
+};
+static_assert(bsp::oriented_space<no_split>);
+static_assert(!bsp::cell_space<no_split>);
+struct no_side {
+  using point = long;
+  using hyperplane = int;
+};
+static_assert(!bsp::oriented_space<no_side>);
+
+// Labels: bool and integers are labels; other types opt in; non-regular types never are.
+struct colour {
+  int rgb;
+  friend bool operator==(colour, colour) = default;
+};
+struct unopted {
+  int v;
+  friend bool operator==(unopted, unopted) = default;
+};
+struct not_comparable {};
+static_assert(bsp::label<bool> && bsp::label<int> && bsp::label<std::size_t>);
+static_assert(!bsp::label<unopted> && !bsp::label<std::string>);
+static_assert(!bsp::label<not_comparable>);
+static_assert(bsp::depth_order_payload<bsp::fragment_list<geometry::e3::exact_kernel>>);
+static_assert(!bsp::depth_order_payload<std::vector<int>>);
+
+} // namespace
+
+template <> inline constexpr bool bsp::enable_label<colour> = true;
+static_assert(bsp::label<colour>);
+
+TEST_CASE("the archetype runs the whole generic tree", "[bsp][concepts]") {
+  using G = archetype::line;
+  // [1, 5] ∪ [9, 13] as boundary points with outward normals (odd positions).
+  std::vector<G::sub_hyperplane> a{{{1, false}}, {{5, true}}, {{9, false}}, {{13, true}}};
+  std::vector<G::sub_hyperplane> b{{{3, false}}, {{11, true}}};
+  auto A = bsp::build_point_set<G>(a), B = bsp::build_point_set<G>(b);
+  CHECK(*bsp::measure(A, true) == 8);
+  CHECK(*bsp::measure(B, true) == 8);
+  CHECK(*bsp::measure(bsp::set_union(A, B), true) == 12);
+  CHECK(*bsp::measure(bsp::set_intersection(A, B), true) == 4);
+  CHECK(*bsp::measure(bsp::set_difference(A, B), true) == 4);
+  CHECK(bsp::classify(A, 2L) == true);
+  CHECK(bsp::classify(A, 6L) == false);
+  CHECK(bsp::boundary(bsp::set_union(A, B)).size() == 2);
+  // Labels of another type, merged.
+  auto colours = bsp::merge(A, B, [](bool x, bool y) { return colour{(x ? 1 : 0) + (y ? 2 : 0)}; });
+  CHECK(bsp::classify(colours, 4L) == colour{3});
+  CHECK(bsp::classify(colours, 12L) == colour{1});
+  // Depth order: the points, nearest first from 0.
+  bsp::fragment_list<G, int> f{{{{5, true}}, 5}, {{{1, true}}, 1}, {{{3, true}}, 3}};
+  auto T = bsp::build_depth_order<G>(f);
+  std::vector<int> order;
+  bsp::for_each_front_to_back(T, 0L, [&](auto const& fr) { order.push_back(fr.id); });
+  CHECK(order == std::vector<int>{1, 3, 5});
+}
