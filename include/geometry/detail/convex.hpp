@@ -76,10 +76,13 @@ template <number FT> sign pencil_coefficient(hvec<FT, 3> const& a, hvec<FT, 3> c
   return filtered_sign([](auto const& x, auto const& y, auto const& z) { return dot(x, x) * dot(z, y) - dot(x, y) * dot(z, x); }, a, b, h);
 }
 
+/// `signs`, when given, receives the sides of the vertices (for two bounds or more).
 template <class Bound>
-region_split<Bound> split_polygon(std::vector<Bound> const& poly, Bound const& hp, Bound const& hn) {
+region_split<Bound> split_polygon(std::vector<Bound> const& poly, Bound const& hp, Bound const& hn,
+                                  std::vector<sign>* signs = nullptr) {
   auto const& h = hp.line();
   std::size_t const k = poly.size();
+  if (signs) signs->clear();
   if (k == 0) return {std::vector<Bound>{hn}, std::vector<Bound>{hp}};
   if (k == 1) {
     auto const& b = poly[0];
@@ -97,6 +100,7 @@ region_split<Bound> split_polygon(std::vector<Bound> const& poly, Bound const& h
     any_pos = any_pos || s[i] == sign::positive;
     any_neg = any_neg || s[i] == sign::negative;
   }
+  if (signs) *signs = s;
   if (!any_pos && !any_neg) {
     // Only a lune can have every vertex on h: then h is in the pencil of its bounds.
     auto const &a = poly[0], &b = poly[1];

@@ -1,0 +1,288 @@
+/// @file
+/// Construction of the spherical visibility map (the paper's section 3): a
+/// depth-order BSP tree of the scene, traversed front to back from the eye;
+/// each fragment, described on the sphere by the circles through the eye and
+/// its edges' lines, descends the S2 point-set tree V; where it reaches an
+/// empty leaf it is visible, and a subtree made of its flagged edges replaces
+/// the leaf while the map T is cut with `split_edge` and `split_face`.
+#pragma once
+
+#include "dcel.hpp"
+
+#include <bsp/depth_order.hpp>
+#include <bsp/tree.hpp>
+#include <geometry/e3.hpp>
+
+#include <chrono>
+#include <numeric>
+
+namespace svm {
+
+/// An input polygon: convex, planar, vertices counter-clockwise seen from its
+/// front; `face` is the index reported for it (its face in the input file).
+template <geometry::number FT> struct polygon {
+  std::vector<geometry::e3::point<FT>> vertices;
+  std::uint32_t face;
+};
+
+struct build_options {
+  bool simplify = true;        ///< join adjacent faces with equal labels
+  bool cull_backfaces = false; ///< drop polygons whose front faces away from the eye
+  std::uint64_t seed = 1;      ///< splitter choice of the depth-order tree
+};
+
+/// Sizes of a map.
+struct map_size {
+  std::size_t vertices = 0, edges = 0, faces = 0;
+};
+
+struct build_statistics {
+  std::size_t input_polygons = 0;
+  std::size_t discarded_edge_on = 0;  ///< plane through the eye: no area on the sphere
+  std::size_t discarded_backfacing = 0;
+  std::size_t fragments = 0;          ///< of the depth-order tree
+  std::size_t hidden_pieces = 0;      ///< fragment pieces that reached a labelled leaf of V
+  std::size_t v_nodes = 0;
+  map_size unsimplified, simplified;
+  std::uint64_t filter_fallbacks = 0;
+  double seconds = 0;
+};
+
+/// The spherical visibility map: the half-edge map T (faces labelled with
+/// the visible polygon's `face`, or −1) and the tree V that locates directions in it.
+template <geometry::number FT> struct visibility_map {
+  using v_tree = bsp::tree<geometry::s2::kernel<FT>, bsp::none, index>;
+  dcel<FT> map;
+  v_tree v;
+  build_statistics stats;
+};
+
+namespace detail {
+
+/// The tag of an edge plane of polygon i (the high bit marks scene edges).
+inline constexpr geometry::hyperplane_tag edge_tag_bit = 0x80000000u;
+
+/// A bound of a fragment on the sphere: a circle, the table circle once it is
+/// in T's table, and the paper's flag — true while the edge may still add a
+/// node to V.
+template <geometry::number FT> struct sphere_bound {
+  geometry::s2::hyperplane<FT> c;
+  bool flag = true;
+  geometry::hvec<FT, 3> const& line() const noexcept { return c.n; }
+};
+
+/// The fragment of an E3 polygon as seen from the eye: each bound B of the
+/// polygon (in the plane P) becomes the circle of the plane through the eye
+/// and the line P ∩ B: `P(O)·B − B(O)·P`, whose normal has degree
+/// deg P + deg B + 1 in the input — bounded, whatever the depth of the trees.
+template <geometry::number FT>
+std::vector<sphere_bound<FT>> project(geometry::e3::sub_hyperplane<FT> const& f, geometry::e3::point<FT> const& eye) {
+  auto const& P = f.support.n;
+  auto const& o = eye.homogeneous();
+  FT po = geometry::dot(P.exact(), o.exact());
+  bool flip = geometry::sign_of(po) == geometry::sign::negative;
+  std::vector<sphere_bound<FT>> out;
+  for (auto const& b : f.bounds) {
+    auto const& B = b.original.n;
+    FT bo = geometry::dot(B.exact(), o.exact());
+    std::array<FT, 3> n;
+    for (std::size_t i = 0; i < 3; ++i) {
+      FT q = po * B[i] - bo * P[i];
+      n[i] = flip ? FT(-q) : q;
+    }
+    out.push_back({geometry::s2::hyperplane<FT>(geometry::hvec<FT, 3>(n), b.original.tag), true});
+  }
+  // Counter-clockwise seen from outside the sphere: det(c₀, c₁, c₂) > 0.
+  if (out.size() >= 3 && det_sign(out[0].c.n, out[1].c.n, out[2].c.n) == geometry::sign::negative)
+    std::reverse(out.begin(), out.end());
+  return out;
+}
+
+template <geometry::number FT> provenance provenance_of(geometry::s2::hyperplane<FT> const& c) {
+  return (c.tag != geometry::no_tag && (c.tag & edge_tag_bit) != 0) ? provenance::scene_edge : provenance::depth_split;
+}
+
+/// Whether circle `c` cuts the interior of face `f` of `m` (a face without edges is the whole sphere).
+template <geometry::number FT> bool cuts(dcel<FT> const& m, index f, geometry::s2::hyperplane<FT> const& c) {
+  index e0 = m.faces()[f].edge;
+  if (e0 == none) return true;
+  bool pos = false, neg = false;
+  index e = e0;
+  do {
+    auto s = m.side(m.origin(e), c);
+    pos = pos || s == geometry::sign::positive;
+    neg = neg || s == geometry::sign::negative;
+    e = m.next(e);
+  } while (e != e0 && !(pos && neg));
+  return pos && neg;
+}
+
+} // namespace detail
+
+/// Simplifies `vm` in place: removes every edge between faces with equal
+/// labels, so that each connected visible region is one face (its holes are
+/// further boundary cycles); V's leaves follow their faces.
+template <geometry::number FT> void simplify(visibility_map<FT>& vm);
+
+/// Builds the visibility map of `polygons` seen from `eye`.
+template <geometry::number FT>
+visibility_map<FT> build(std::vector<polygon<FT>> const& polygons, geometry::e3::point<FT> const& eye,
+                         build_options const& options = {}) {
+  using namespace geometry;
+  using K3 = e3::kernel<FT>;
+  auto t0 = std::chrono::steady_clock::now();
+  auto fallbacks0 = filter_stats().fallbacks;
+  visibility_map<FT> vm;
+  auto& st = vm.stats;
+  st.input_polygons = polygons.size();
+
+  // 1. The polygons, their edge planes tagged as scene edges; discards.
+  bsp::fragment_list<K3, std::uint32_t> input;
+  for (auto const& p : polygons) {
+    auto s = e3::convex_polygon<FT>(p.vertices, p.face);
+    auto side = e3::side(s.support, eye);
+    if (side == oriented_side::on) {
+      ++st.discarded_edge_on;
+      continue;
+    }
+    if (options.cull_backfaces && side == oriented_side::negative) {
+      ++st.discarded_backfacing;
+      continue;
+    }
+    for (auto& b : s.bounds) b.original.tag = detail::edge_tag_bit | p.face;
+    input.push_back({std::move(s), p.face});
+  }
+
+  // 2. The depth-order tree.
+  auto tree = bsp::build_depth_order<K3>(std::move(input), bsp::random_order(options.seed));
+
+  // 3. Front to back: each fragment into V.
+  vm.v = typename visibility_map<FT>::v_tree(index{0});
+  auto& m = vm.map;
+  auto& v = vm.v;
+  struct work {
+    bsp::node_id n, parent;
+    int side;
+    std::vector<detail::sphere_bound<FT>> frag;
+  };
+  std::vector<work> stack;
+  std::vector<sign> signs;
+  bsp::for_each_front_to_back(tree, eye, [&](auto const& fr) {
+    ++st.fragments;
+    stack.push_back({v.root(), bsp::node_id{}, 0, detail::project(fr.piece, eye)});
+    while (!stack.empty()) {
+      work w = std::move(stack.back());
+      stack.pop_back();
+      if (!v.is_leaf(w.n)) {
+        auto const& g = v.splitter(w.n);
+        detail::sphere_bound<FT> hp{g, false}, hn{g.opposite(), false};
+        auto r = geometry::detail::split_polygon(w.frag, hp, hn, &signs);
+        if (r.negative && r.positive) {
+          stack.push_back({v.negative(w.n), w.n, -1, std::move(*r.negative)});
+          stack.push_back({v.positive(w.n), w.n, +1, std::move(*r.positive)});
+          continue;
+        }
+        // Not split: an edge lying in g is in V already (the paper's flag reset).
+        auto& part = r.negative ? *r.negative : *r.positive;
+        std::size_t k = part.size();
+        if (signs.size() == k)
+          for (std::size_t i = 0; i < k; ++i)
+            if (signs[i] == sign::zero && signs[(i + k - 1) % k] == sign::zero) part[i].flag = false;
+        stack.push_back({r.negative ? v.negative(w.n) : v.positive(w.n), w.n, r.negative ? -1 : +1, std::move(part)});
+        continue;
+      }
+      index f = v.leaf_data(w.n);
+      if (m.faces()[f].label != -1) {
+        ++st.hidden_pieces;
+        continue;
+      }
+      // Visible: the flagged edges cut the leaf's face, each adding a node to V.
+      bsp::node_id parent = w.parent;
+      int side = w.side;
+      for (auto const& b : w.frag) {
+        if (!b.flag || !detail::cuts(m, f, b.c)) continue;
+        index c = m.add_circle(b.c, detail::provenance_of(b.c));
+        index g = m.faces()[f].edge == none ? m.make_first_circle(c) : m.split_face(f, c);
+        bsp::node_id neg = v.add_leaf(g), pos = v.add_leaf(f);
+        bsp::node_id node = v.add_interior(b.c, neg, pos);
+        v.attach(parent, side, node);
+        parent = node;
+        side = +1;
+      }
+      m.face_at(f).label = fr.id;
+    }
+  });
+  st.v_nodes = v.statistics().interior_nodes;
+  st.unsimplified = {m.vertices().size(), m.half_edges().size() / 2, m.faces().size()};
+  st.simplified = st.unsimplified;
+  if (options.simplify) simplify(vm);
+  st.filter_fallbacks = filter_stats().fallbacks - fallbacks0;
+  st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return vm;
+}
+
+template <geometry::number FT> void simplify(visibility_map<FT>& vm) {
+  auto& m = vm.map;
+  auto const& he = m.half_edges();
+  auto const& faces = m.faces();
+  std::size_t ne = he.size();
+  // Faces joined across removed edges (union–find).
+  std::vector<index> parent(faces.size());
+  std::iota(parent.begin(), parent.end(), index{0});
+  auto find = [&](index x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  std::vector<char> keep(ne, 0);
+  for (index e = 0; e < ne; e += 2) {
+    index a = he[e].face, b = he[e + 1].face;
+    if (faces[a].label != faces[b].label) {
+      keep[e] = keep[e + 1] = 1;
+    } else {
+      index ra = find(a), rb = find(b);
+      if (ra != rb) parent[ra] = rb;
+    }
+  }
+  // New indices: kept edges in pairs (keeping parity), vertices with a kept edge, face classes.
+  std::vector<index> new_edge(ne, none), new_vertex(m.vertices().size(), none), new_face(faces.size(), none);
+  std::vector<typename dcel<FT>::vertex> vertices;
+  std::vector<typename dcel<FT>::half_edge> edges;
+  std::vector<typename dcel<FT>::face> out_faces;
+  for (index f = 0; f < faces.size(); ++f)
+    if (find(f) == f) {
+      new_face[f] = static_cast<index>(out_faces.size());
+      out_faces.push_back({faces[f].label, none});
+    }
+  for (index f = 0; f < faces.size(); ++f) new_face[f] = new_face[find(f)];
+  for (index e = 0; e < ne; ++e) {
+    if (!keep[e]) continue;
+    index o = he[e].origin;
+    if (new_vertex[o] == none) {
+      new_vertex[o] = static_cast<index>(vertices.size());
+      vertices.push_back(m.vertices()[o]);
+    }
+    new_edge[e] = static_cast<index>(edges.size());
+    edges.push_back({new_vertex[o], none, none, new_face[he[e].face], he[e].circle});
+  }
+  // Around each vertex the kept edges keep their old rotation, o → next(twin(o)):
+  // the next kept half-edge after twin(o) is the first kept one in that rotation.
+  for (index e = 0; e < ne; ++e) {
+    if (!keep[e]) continue;
+    index t = dcel<FT>::twin(e); // ends where e starts
+    index o = he[t].next;
+    while (!keep[o]) o = he[dcel<FT>::twin(o)].next;
+    edges[new_edge[t]].next = new_edge[o];
+    edges[new_edge[o]].prev = new_edge[t];
+  }
+  for (auto& f : out_faces) f.edge = none;
+  for (index e = 0; e < edges.size(); ++e)
+    if (out_faces[edges[e].face].edge == none) out_faces[edges[e].face].edge = e;
+  m.assign(std::move(vertices), std::move(edges), std::move(out_faces));
+  // V's leaves follow their faces.
+  for_each_node(vm.v, vm.v.root(), [&](bsp::node_id n, std::size_t) {
+    if (vm.v.is_leaf(n)) vm.v.leaf_data(n) = new_face[vm.v.leaf_data(n)];
+  });
+  vm.stats.simplified = {m.vertices().size(), m.half_edges().size() / 2, m.faces().size()};
+}
+
+} // namespace svm

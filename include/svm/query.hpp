@@ -1,0 +1,37 @@
+/// @file
+/// Queries on a visibility map: what is visible in a direction, and the faces
+/// of the map as cycles of vertices.
+#pragma once
+
+#include "build.hpp"
+
+namespace svm {
+
+/// The face of T seen in direction `d` (descending V; a direction on an edge
+/// of V gets the face on the edge's positive side).
+template <geometry::number FT> index locate_face(visibility_map<FT> const& vm, geometry::s2::point<FT> const& d) {
+  auto n = vm.v.root();
+  while (!vm.v.is_leaf(n)) n = vm.v.child(n, geometry::s2::side(vm.v.splitter(n), d) == geometry::oriented_side::negative ? -1 : +1);
+  return vm.v.leaf_data(n);
+}
+
+/// The input face visible in direction `d`, or −1.
+template <geometry::number FT> std::int64_t locate(visibility_map<FT> const& vm, geometry::s2::point<FT> const& d) {
+  return vm.map.faces()[locate_face(vm, d)].label;
+}
+
+/// The boundary cycles of every face: `cycles[f]` lists the cycles of face
+/// `f`, each as its half-edges in order.
+template <geometry::number FT> std::vector<std::vector<std::vector<index>>> face_cycles(dcel<FT> const& m) {
+  std::vector<std::vector<std::vector<index>>> out(m.faces().size());
+  std::vector<char> seen(m.half_edges().size(), 0);
+  for (index e = 0; e < m.half_edges().size(); ++e) {
+    if (seen[e]) continue;
+    auto c = m.cycle(e);
+    for (index x : c) seen[x] = 1;
+    out[m.face_of(e)].push_back(std::move(c));
+  }
+  return out;
+}
+
+} // namespace svm
