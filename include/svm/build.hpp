@@ -221,6 +221,72 @@ visibility_map<FT> build(std::vector<polygon<FT>> const& polygons, geometry::e3:
   return vm;
 }
 
+namespace detail {
+
+/// Removes every vertex where exactly two edges meet on one great circle,
+/// joining them, as long as the joined edge stays a minor arc; compacts the tables.
+template <geometry::number FT>
+void merge_collinear(std::vector<typename dcel<FT>::vertex>& vertices, std::vector<typename dcel<FT>::half_edge>& edges,
+                     std::vector<typename dcel<FT>::face>& faces, dcel<FT> const& table) {
+  using geometry::sign;
+  auto const& C = table.circles();
+  auto point = [&](index v) { return cross(C[vertices[v].a].n, C[vertices[v].b].n); };
+  auto normal_sign = [](index e) { return (e & 1u) ? sign::negative : sign::positive; };
+  std::vector<index> out(vertices.size(), none);
+  for (index e = 0; e < edges.size(); ++e) out[edges[e].origin] = e;
+  std::vector<char> dead_edge(edges.size(), 0), dead_vertex(vertices.size(), 0);
+  for (index v = 0; v < vertices.size(); ++v) {
+    index out1 = out[v];
+    if (out1 == none) continue;
+    index out2 = edges[out1 ^ 1u].next;
+    if (out2 == out1 || edges[out2 ^ 1u].next != out1) continue; // degree other than 2
+    index e1 = out1 ^ 1u, e2 = out2; // u → v → w along one face
+    auto par = geometry::parallel(C[edges[e1].circle].n, C[edges[e2].circle].n) * normal_sign(e1) * normal_sign(e2);
+    if (par != sign::positive) continue;
+    index u = edges[out1 ^ 1u].origin, w = edges[e2 ^ 1u].origin;
+    if (u == w) continue;
+    auto n1 = C[edges[e1].circle].n;
+    if (normal_sign(e1) == sign::negative) n1 = -n1;
+    if (det_sign(n1, point(u), point(w)) != sign::positive) continue; // the joined arc would not be minor
+    // e1 now runs u → w and its twin w → u; e2 and its twin go.
+    index t2 = e2 ^ 1u;
+    edges[e1].next = edges[e2].next;
+    edges[edges[e2].next].prev = e1;
+    edges[out1].origin = w;
+    edges[out1].prev = edges[t2].prev;
+    edges[edges[t2].prev].next = out1;
+    if (faces[edges[e2].face].edge == e2) faces[edges[e2].face].edge = e1;
+    if (faces[edges[t2].face].edge == t2) faces[edges[t2].face].edge = out1;
+    if (out[w] == t2) out[w] = out1;
+    dead_edge[e2] = dead_edge[t2] = 1;
+    dead_vertex[v] = 1;
+    out[v] = none;
+  }
+  // Compact, keeping twins in even/odd pairs.
+  std::vector<index> ne(edges.size(), none), nv(vertices.size(), none);
+  std::vector<typename dcel<FT>::vertex> v2;
+  for (index v = 0; v < vertices.size(); ++v)
+    if (!dead_vertex[v]) nv[v] = static_cast<index>(v2.size()), v2.push_back(vertices[v]);
+  index k = 0;
+  for (index e = 0; e < edges.size(); ++e)
+    if (!dead_edge[e]) ne[e] = k++;
+  std::vector<typename dcel<FT>::half_edge> e2s;
+  for (index e = 0; e < edges.size(); ++e) {
+    if (dead_edge[e]) continue;
+    auto h = edges[e];
+    h.origin = nv[h.origin];
+    h.next = ne[h.next];
+    h.prev = ne[h.prev];
+    e2s.push_back(h);
+  }
+  for (auto& f : faces)
+    if (f.edge != none) f.edge = ne[f.edge];
+  vertices = std::move(v2);
+  edges = std::move(e2s);
+}
+
+} // namespace detail
+
 template <geometry::number FT> void simplify(visibility_map<FT>& vm) {
   auto& m = vm.map;
   auto const& he = m.half_edges();
@@ -277,6 +343,7 @@ template <geometry::number FT> void simplify(visibility_map<FT>& vm) {
   for (auto& f : out_faces) f.edge = none;
   for (index e = 0; e < edges.size(); ++e)
     if (out_faces[edges[e].face].edge == none) out_faces[edges[e].face].edge = e;
+  detail::merge_collinear<FT>(vertices, edges, out_faces, m);
   m.assign(std::move(vertices), std::move(edges), std::move(out_faces));
   // V's leaves follow their faces.
   for_each_node(vm.v, vm.v.root(), [&](bsp::node_id n, std::size_t) {

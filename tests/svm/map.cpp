@@ -7,6 +7,7 @@
 
 #include <catch2/catch.hpp>
 #include <svm/query.hpp>
+#include <svm/scenes.hpp>
 
 #include <iostream>
 #include <numbers>
@@ -242,4 +243,29 @@ TEST_CASE("the visibility map agrees with an exact ray caster", "[svm]") {
             << skipped << " skipped (on an edge or a tie)\n";
   CHECK(scenes >= 200);
   CHECK(compared > 150000);
+}
+
+TEST_CASE("the paper's scene families: map sizes, and Platforms linear once simplified", "[svm][scenes]") {
+  std::vector<std::size_t> sizes{4, 8, 16};
+  std::vector<svm::map_size> platforms, raw_platforms;
+  for (std::size_t n : sizes) {
+    for (auto const& [name, sc] : {std::pair{"bricks", svm::scenes::bricks(n)}, std::pair{"hidden bricks", svm::scenes::hidden_bricks(n)},
+                                   std::pair{"platforms", svm::scenes::platforms(n)}, std::pair{"random", svm::scenes::random_cubes(n, n)}}) {
+      auto vm = svm::build<Q>(sc.polygons, sc.eye);
+      auto const& st = vm.stats;
+      std::cout << name << " n=" << n << ": map " << st.unsimplified.vertices << "/" << st.unsimplified.edges << "/"
+                << st.unsimplified.faces << " (V/E/F), simplified " << st.simplified.vertices << "/" << st.simplified.edges << "/"
+                << st.simplified.faces << "\n";
+      check_map(vm, true);
+      if (std::string(name) == "platforms") platforms.push_back(st.simplified), raw_platforms.push_back(st.unsimplified);
+      if (std::string(name) == "hidden bricks") CHECK(st.simplified.faces == 2); // only the hiding box, one region, and the rest
+    }
+  }
+  // Each slab shows one ring (n rings and the background): n + 1 faces, a few corners per ring.
+  for (std::size_t i = 0; i < sizes.size(); ++i) {
+    CHECK(platforms[i].faces == sizes[i] + 1);
+    CHECK(platforms[i].vertices <= 8 * sizes[i]);
+  }
+  // Without simplification the partition lines of nearer slabs cut the farther ones: quadratic.
+  CHECK(raw_platforms[2].edges > 3 * raw_platforms[1].edges);
 }

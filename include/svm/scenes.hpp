@@ -1,0 +1,133 @@
+/// @file
+/// The paper's four scene families (section 3.3), with exact integer
+/// coordinates, and the suggested eye for each: Bricks, Hidden Bricks,
+/// Platforms, Random; and a terrain mesh for large closed-ish inputs.
+#pragma once
+
+#include "build.hpp"
+
+#include <random>
+#include <string>
+
+namespace svm::scenes {
+
+/// A scene: convex quadrilaterals (counter-clockwise seen from outside their
+/// solid) and the eye the family is meant to be seen from.
+struct scene {
+  std::vector<polygon<geometry::rational>> polygons;
+  geometry::e3::point<geometry::rational> eye;
+};
+
+using Q = geometry::rational;
+using P = geometry::e3::point<Q>;
+
+/// Adds the six faces of the box [lo, hi], each as one quadrilateral, outward.
+inline void add_box(scene& s, P const& lo, P const& hi) {
+  auto v = [&](int i, int j, int k) { return P(i ? hi.x() : lo.x(), j ? hi.y() : lo.y(), k ? hi.z() : lo.z()); };
+  std::uint32_t f = static_cast<std::uint32_t>(s.polygons.size());
+  std::array<std::array<P, 4>, 6> q{{{v(0, 0, 0), v(0, 1, 0), v(1, 1, 0), v(1, 0, 0)},
+                                     {v(0, 0, 1), v(1, 0, 1), v(1, 1, 1), v(0, 1, 1)},
+                                     {v(0, 0, 0), v(1, 0, 0), v(1, 0, 1), v(0, 0, 1)},
+                                     {v(0, 1, 0), v(0, 1, 1), v(1, 1, 1), v(1, 1, 0)},
+                                     {v(0, 0, 0), v(0, 0, 1), v(0, 1, 1), v(0, 1, 0)},
+                                     {v(1, 0, 0), v(1, 1, 0), v(1, 1, 1), v(1, 0, 1)}}};
+  for (auto const& face : q) s.polygons.push_back({{face[0], face[1], face[2], face[3]}, f++});
+}
+
+/// Bricks: n/2 long bars in front, n/2 perpendicular bars behind them and a
+/// back wall; through the gaps of the front row the eye sees Θ(n²) pieces.
+inline scene bricks(std::size_t n) {
+  scene s;
+  long h = static_cast<long>(std::max<std::size_t>(n / 2, 1));
+  for (long i = 0; i < h; ++i) // front: bars along x, gaps in y
+    add_box(s, P(Q(-2 * h), Q(4 * i - 2 * h), Q(10)), P(Q(2 * h), Q(4 * i - 2 * h + 2), Q(11)));
+  for (long j = 0; j < h; ++j) // behind: bars along y, gaps in x
+    add_box(s, P(Q(4 * j - 2 * h), Q(-2 * h), Q(20)), P(Q(4 * j - 2 * h + 2), Q(2 * h), Q(21)));
+  add_box(s, P(Q(-4 * h), Q(-4 * h), Q(30)), P(Q(4 * h), Q(4 * h), Q(31))); // the wall behind
+  s.eye = P(Q(1, 3), Q(1, 7), Q(0));
+  return s;
+}
+
+/// Hidden Bricks: Bricks, all behind one larger box nearer the eye.
+inline scene hidden_bricks(std::size_t n) {
+  scene s = bricks(n);
+  long h = static_cast<long>(std::max<std::size_t>(n / 2, 1));
+  std::vector<polygon<Q>> front;
+  scene blocker;
+  add_box(blocker, P(Q(-8 * h), Q(-8 * h), Q(4)), P(Q(8 * h), Q(8 * h), Q(5)));
+  // The blocker first, so that face indices start with what is visible.
+  for (auto& p : s.polygons) p.face += 6;
+  blocker.polygons.insert(blocker.polygons.end(), s.polygons.begin(), s.polygons.end());
+  blocker.eye = s.eye;
+  return blocker;
+}
+
+/// Platforms: n square slabs, each farther and larger than the one before as
+/// seen from the eye, so that every slab shows a ring around the nearer ones.
+inline scene platforms(std::size_t n) {
+  scene s;
+  for (long i = 1; i <= static_cast<long>(n); ++i) {
+    long r = i * i + i, z = 4 * i;
+    add_box(s, P(Q(-r), Q(-r), Q(z)), P(Q(r), Q(r), Q(z + 1)));
+  }
+  s.eye = P(Q(1, 5), Q(1, 9), Q(0));
+  return s;
+}
+
+/// Random: n cubes of side 2 turned by random exact rotations (quaternions
+/// with small integer components give rational rotation matrices), at random
+/// places in a box; they may intersect one another.
+inline scene random_cubes(std::size_t n, std::uint64_t seed = 1) {
+  scene s;
+  std::mt19937_64 rng(seed);
+  auto uni = [&](long lo, long hi) { return std::uniform_int_distribution<long>(lo, hi)(rng); };
+  long extent = 4 + static_cast<long>(std::cbrt(static_cast<double>(n)) * 4);
+  for (std::size_t c = 0; c < n; ++c) {
+    long a = uni(1, 4), b = uni(-4, 4), cc = uni(-4, 4), d = uni(-4, 4);
+    Q w(a * a + b * b + cc * cc + d * d);
+    // Rotation matrix of the quaternion (a, b, c, d), divided by its norm.
+    std::array<std::array<Q, 3>, 3> R{{{Q(a * a + b * b - cc * cc - d * d) / w, Q(2 * (b * cc - a * d)) / w, Q(2 * (b * d + a * cc)) / w},
+                                       {Q(2 * (b * cc + a * d)) / w, Q(a * a - b * b + cc * cc - d * d) / w, Q(2 * (cc * d - a * b)) / w},
+                                       {Q(2 * (b * d - a * cc)) / w, Q(2 * (cc * d + a * b)) / w, Q(a * a - b * b - cc * cc + d * d) / w}}};
+    P centre(Q(uni(-extent, extent)), Q(uni(-extent, extent)), Q(uni(6, 6 + 2 * extent)));
+    scene cube;
+    add_box(cube, P(Q(-1), Q(-1), Q(-1)), P(Q(1), Q(1), Q(1)));
+    for (auto& p : cube.polygons) {
+      for (auto& v : p.vertices) {
+        std::array<Q, 3> x{v.x(), v.y(), v.z()}, y;
+        for (std::size_t i = 0; i < 3; ++i) y[i] = R[i][0] * x[0] + R[i][1] * x[1] + R[i][2] * x[2];
+        v = P(Q(y[0] + centre.x()), Q(y[1] + centre.y()), Q(y[2] + centre.z()));
+      }
+      p.face += static_cast<std::uint32_t>(s.polygons.size());
+    }
+    s.polygons.insert(s.polygons.end(), cube.polygons.begin(), cube.polygons.end());
+  }
+  s.eye = P(Q(1, 3), Q(1, 7), Q(0));
+  return s;
+}
+
+/// A terrain: a `k` × `k` grid of integer heights, two triangles per cell
+/// (2k² triangles), seen from above.
+inline scene terrain(std::size_t k, std::uint64_t seed = 1) {
+  scene s;
+  std::mt19937_64 rng(seed);
+  std::vector<long> h((k + 1) * (k + 1));
+  for (std::size_t i = 0; i <= k; ++i)
+    for (std::size_t j = 0; j <= k; ++j) {
+      double x = static_cast<double>(i) / static_cast<double>(k), y = static_cast<double>(j) / static_cast<double>(k);
+      h[i * (k + 1) + j] = std::lround(20 * std::sin(7 * x) * std::cos(5 * y) + 6 * std::sin(23 * x * y)) +
+                           std::uniform_int_distribution<long>(0, 2)(rng);
+    }
+  auto p = [&](std::size_t i, std::size_t j) { return P(Q(static_cast<long>(i)), Q(static_cast<long>(j)), Q(h[i * (k + 1) + j])); };
+  std::uint32_t f = 0;
+  for (std::size_t i = 0; i < k; ++i)
+    for (std::size_t j = 0; j < k; ++j) {
+      s.polygons.push_back({{p(i, j), p(i + 1, j), p(i + 1, j + 1)}, f++});
+      s.polygons.push_back({{p(i, j), p(i + 1, j + 1), p(i, j + 1)}, f++});
+    }
+  long c = static_cast<long>(k) / 2;
+  s.eye = P(Q(c) + Q(1, 3), Q(-static_cast<long>(k) / 3) + Q(1, 7), Q(60));
+  return s;
+}
+
+} // namespace svm::scenes
