@@ -1,9 +1,17 @@
 # Installs genbsp from an existing build tree into a temporary prefix, then
-# configures, builds and runs tests/consumer against that prefix.
+# configures and builds an outside project against that prefix and runs it:
+#
+#   CHECK=consumer (the default): tests/consumer, one small program;
+#   CHECK=examples: examples/, every example program, each checking its own
+#                   result (any non-zero exit status fails the test).
 #
 #   cmake -DSOURCE_DIR=<genbsp source> -DBINARY_DIR=<genbsp build>
-#         [-DGENERATOR=<generator>] [-DCXX_COMPILER=<compiler>] [-DCONFIG=<build type>]
+#         [-DCHECK=consumer|examples] [-DGENERATOR=<generator>]
+#         [-DCXX_COMPILER=<compiler>] [-DCONFIG=<build type>]
 #         -P tests/install_test.cmake
+#
+# The builds use the build tool's default parallelism; set the environment
+# variable CMAKE_BUILD_PARALLEL_LEVEL to limit it.
 cmake_minimum_required(VERSION 3.25)
 
 foreach(var SOURCE_DIR BINARY_DIR)
@@ -11,10 +19,21 @@ foreach(var SOURCE_DIR BINARY_DIR)
     message(FATAL_ERROR "install_test.cmake: -D${var}=... is required")
   endif()
 endforeach()
+if(NOT DEFINED CHECK OR CHECK STREQUAL "")
+  set(CHECK consumer)
+endif()
+if(CHECK STREQUAL "consumer")
+  set(project_dir ${SOURCE_DIR}/tests/consumer)
+elseif(CHECK STREQUAL "examples")
+  set(project_dir ${SOURCE_DIR}/examples)
+else()
+  message(FATAL_ERROR "install_test.cmake: -DCHECK=${CHECK}: expected consumer or examples")
+endif()
 
-set(work ${BINARY_DIR}/install_test)
+# One work folder per check, so that both can run at once (ctest -j).
+set(work ${BINARY_DIR}/install_test/${CHECK})
 set(prefix ${work}/prefix)
-set(consumer_build ${work}/consumer)
+set(project_build ${work}/build)
 file(REMOVE_RECURSE ${work})
 file(MAKE_DIRECTORY ${work})
 
@@ -36,7 +55,7 @@ if(DEFINED CXX_COMPILER AND NOT CXX_COMPILER STREQUAL "")
 endif()
 
 # CONFIG is the configuration of the genbsp build (what $<CONFIG> gives); the
-# consumer is built in the same one.
+# outside project is built in the same one.
 set(install_args)
 if(DEFINED CONFIG AND NOT CONFIG STREQUAL "")
   list(APPEND install_args --config ${CONFIG})
@@ -45,12 +64,26 @@ else()
 endif()
 
 run(install ${CMAKE_COMMAND} --install ${BINARY_DIR} --prefix ${prefix} ${install_args})
-run(configure ${CMAKE_COMMAND} -S ${SOURCE_DIR}/tests/consumer -B ${consumer_build} ${configure_args}
+run("configure ${CHECK}" ${CMAKE_COMMAND} -S ${project_dir} -B ${project_build} ${configure_args}
     -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_BUILD_TYPE=${CONFIG})
-run(build ${CMAKE_COMMAND} --build ${consumer_build} --config ${CONFIG})
+run("build ${CHECK}" ${CMAKE_COMMAND} --build ${project_build} --config ${CONFIG})
 
-find_program(consumer_exe consumer PATHS ${consumer_build} PATH_SUFFIXES ${CONFIG} NO_DEFAULT_PATH
-             NO_CACHE REQUIRED)
-run(run ${consumer_exe})
+# The programs to run: the consumer, or one per examples/*.cpp (named after it).
+if(CHECK STREQUAL "consumer")
+  set(programs consumer)
+else()
+  file(GLOB sources RELATIVE ${project_dir} ${project_dir}/*.cpp)
+  list(TRANSFORM sources REPLACE "\\.cpp$" "")
+  list(SORT sources)
+  set(programs ${sources})
+  if(NOT programs)
+    message(FATAL_ERROR "install_test: no examples in ${project_dir}")
+  endif()
+endif()
+foreach(program IN LISTS programs)
+  find_program(exe_${program} ${program} PATHS ${project_build} PATH_SUFFIXES ${CONFIG} NO_DEFAULT_PATH
+               NO_CACHE REQUIRED)
+  run("run ${program}" ${exe_${program}})
+endforeach()
 
 file(REMOVE_RECURSE ${work})

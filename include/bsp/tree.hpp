@@ -50,8 +50,8 @@ struct tree_statistics {
 
 /// A BSP tree over the geometry `G`.  Nodes live in two contiguous arenas
 /// (interior nodes, leaves) addressed by `node_id`; copying a tree copies
-/// the arenas.  Nodes are added bottom-up (`add_leaf`, `add_interior`) or by
-/// replacing a leaf with a subtree (`split_leaf`); a tree has one root.
+/// the arenas.  Nodes are added bottom-up (`add_leaf`, `add_interior`) or
+/// hung under a parent (`attach`); a tree has one root.
 template <geometry G, class NodeData = none, class LeafData = none> class tree {
 public:
   using geometry_type = G;
