@@ -51,6 +51,7 @@ struct build_statistics {
 /// The spherical visibility map: the half-edge map T (faces labelled with
 /// the visible polygon's `face`, or −1) and the tree V that locates directions in it.
 template <geometry::number FT> struct visibility_map {
+  using number_type = FT;
   using v_tree = bsp::tree<geometry::s2::kernel<FT>, bsp::none, index>;
   dcel<FT> map;
   v_tree v;

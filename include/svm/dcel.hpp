@@ -240,39 +240,56 @@ template <geometry::number FT> index dcel<FT>::split_edge(index e, index a, inde
 template <geometry::number FT> index dcel<FT>::split_face(index f, index c) {
   auto const& circle = circles_[c];
   if (faces_[f].edge == none) throw std::logic_error("dcel::split_face on a face without edges");
-  // Entry (from − to +) and exit (from + to −) points of the face boundary.
-  index enter = none, exit = none; // half-edges whose origin is the crossing vertex
+  // Entry (from − to +) and exit (from + to −) points of the face boundary:
+  // walking the cycle from a negative vertex, the first vertex of the zero
+  // run (or the crossing inside the edge) where the sign turns positive, then
+  // likewise back to negative.  Exactly, a convex face has just these two.
   auto cyc = cycle(faces_[f].edge);
-  std::vector<geometry::sign> s(cyc.size());
-  for (std::size_t i = 0; i < cyc.size(); ++i) s[i] = side(origin(cyc[i]), circle);
   std::size_t n = cyc.size();
+  std::vector<geometry::sign> s(n);
+  std::size_t start = n;
   for (std::size_t i = 0; i < n; ++i) {
-    auto su = s[i], sw = s[(i + 1) % n];
-    index e = cyc[i];
-    bool neg_u = su == geometry::sign::negative, pos_u = su == geometry::sign::positive;
-    bool neg_w = sw == geometry::sign::negative, pos_w = sw == geometry::sign::positive;
-    if (su == geometry::sign::zero) {
-      auto sp = s[(i + n - 1) % n];
-      if (sp == geometry::sign::negative && pos_w) enter = e;
-      if (sp == geometry::sign::positive && neg_w) exit = e;
+    s[i] = side(origin(cyc[i]), circle);
+    if (s[i] == geometry::sign::negative && start == n) start = i;
+  }
+  if (start == n) throw std::logic_error("dcel::split_face: the circle does not cut the face");
+  // A crossing: at vertex `vertex` (the origin of cyc[vertex]), or inside edge cyc[edge].
+  struct crossing {
+    std::size_t at = 0;
+    bool inside_edge = false;
+  } cross_in, cross_out;
+  int found = 0;
+  geometry::sign last = geometry::sign::negative;
+  std::size_t zero_run = n; // first vertex of the current zero run
+  for (std::size_t k = 1; k <= n && found < 2; ++k) {
+    std::size_t i = (start + k) % n;
+    if (s[i] == geometry::sign::zero) {
+      if (zero_run == n) zero_run = i;
       continue;
     }
-    if ((neg_u && pos_w) || (pos_u && neg_w)) {
-      // The crossing point inside e: entering c's positive side it is c × e, leaving it e × c.
-      index ec = edges_[e].circle;
-      bool rev = reversed(e);
-      // e runs about ±circles[ec]; with circles[ec] itself: enter = c × ec; about the opposite: swapped.
-      bool entering = neg_u;
-      if (entering != rev)
-        split_edge(e, c, ec);
-      else
-        split_edge(e, ec, c);
-      index after = edges_[e].next; // starts at x
-      (entering ? enter : exit) = after;
-      // The cycle changed: e is now u → x; the rest keeps its order.  Continue scanning.
+    if (s[i] != last) {
+      crossing x = zero_run != n ? crossing{zero_run, false} : crossing{(i + n - 1) % n, true};
+      (found == 0 ? cross_in : cross_out) = x;
+      ++found;
+      last = s[i];
     }
+    zero_run = n;
   }
-  if (enter == none || exit == none) throw std::logic_error("dcel::split_face: the circle does not cut the face");
+  if (found < 2) throw std::logic_error("dcel::split_face: the circle does not cut the face");
+  // Split the crossed edges (the later one first keeps the earlier index valid).
+  auto realise = [&](crossing const& x, bool entering) -> index {
+    if (!x.inside_edge) return cyc[x.at];
+    index e = cyc[x.at];
+    index ec = edges_[e].circle;
+    // Along e (about ±circles[ec]) the entry point of c's positive side is c × ec, the exit ec × c.
+    if (entering != reversed(e))
+      split_edge(e, c, ec);
+    else
+      split_edge(e, ec, c);
+    return edges_[e].next; // starts at the new vertex
+  };
+  index enter = realise(cross_in, true);
+  index exit = realise(cross_out, false);
   // New edge: exit point b → entry point a on c (positive side on its left) closes the positive part.
   index a = origin(enter), b = origin(exit);
   index pa = edges_[enter].prev, pb = edges_[exit].prev;

@@ -5,6 +5,8 @@
 
 #include "build.hpp"
 
+#include <set>
+
 namespace svm {
 
 /// The face of T seen in direction `d` (descending V; a direction on an edge
@@ -32,6 +34,30 @@ template <geometry::number FT> std::vector<std::vector<std::vector<index>>> face
     out[m.face_of(e)].push_back(std::move(c));
   }
   return out;
+}
+
+/// The input faces visible somewhere, in increasing order.
+template <geometry::number FT> std::vector<std::int64_t> visible_polygons(dcel<FT> const& m) {
+  std::set<std::int64_t> s;
+  for (auto const& f : m.faces())
+    if (f.label >= 0) s.insert(f.label);
+  return {s.begin(), s.end()};
+}
+
+/// The faces of the map where input face `label` is visible.
+template <geometry::number FT> std::vector<index> faces_of(dcel<FT> const& m, std::int64_t label) {
+  std::vector<index> out;
+  for (index f = 0; f < m.faces().size(); ++f)
+    if (m.faces()[f].label == label) out.push_back(f);
+  return out;
+}
+
+/// The faces sharing an edge with face `f`, in increasing order.
+template <geometry::number FT> std::vector<index> adjacent_faces(dcel<FT> const& m, index f) {
+  std::set<index> s;
+  for (index e = 0; e < m.half_edges().size(); ++e)
+    if (m.face_of(e) == f && m.face_of(dcel<FT>::twin(e)) != f) s.insert(m.face_of(dcel<FT>::twin(e)));
+  return {s.begin(), s.end()};
 }
 
 } // namespace svm

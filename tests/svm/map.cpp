@@ -7,6 +7,7 @@
 
 #include <catch2/catch.hpp>
 #include <svm/query.hpp>
+#include <svm/graph.hpp>
 #include <svm/scenes.hpp>
 
 #include <iostream>
@@ -268,4 +269,51 @@ TEST_CASE("the paper's scene families: map sizes, and Platforms linear once simp
   }
   // Without simplification the partition lines of nearer slabs cut the farther ones: quadratic.
   CHECK(raw_platforms[2].edges > 3 * raw_platforms[1].edges);
+}
+
+TEST_CASE("Boost.Graph on the map: components for Euler, visible regions per polygon", "[svm][graph]") {
+  int checked = 0;
+  for (int t = 0; t < 30; ++t) {
+    auto sc = make_scene(t % 6);
+    if (sc.tris.empty()) continue;
+    auto polys = polygons_of(sc.tris);
+    e3::point<Q> eye(Q(sc.eye[0]), Q(sc.eye[1]), Q(sc.eye[2]));
+    auto raw = svm::build<Q>(polys, eye, {.simplify = false});
+    auto simple = svm::build<Q>(polys, eye);
+    // BGL's components satisfy Euler's formula on both maps.
+    for (auto const* vm : {&raw, &simple}) {
+      auto const& m = vm->map;
+      long lhs = static_cast<long>(m.vertices().size()) - static_cast<long>(m.half_edges().size() / 2) + static_cast<long>(m.faces().size());
+      CHECK(lhs == 1 + static_cast<long>(svm::edge_components(m)));
+    }
+    // The regions BGL finds in the raw map, polygon by polygon, are the faces of the simplified map.
+    auto regions = svm::visible_regions(raw.map);
+    std::map<std::int64_t, std::size_t> faces;
+    for (auto const& f : simple.map.faces())
+      if (f.label >= 0) ++faces[f.label];
+    CHECK(regions == faces);
+    CHECK(svm::visible_regions(simple.map) == faces);
+    ++checked;
+  }
+  CHECK(checked >= 25);
+}
+
+TEST_CASE("queries: visible polygons, their faces, adjacency", "[svm][query]") {
+  // A square at z = 5 and, in front of it, a smaller one: the far square is seen as a ring.
+  auto P = [](long x, long y, long z) { return e3::point<Q>(Q(x), Q(y), Q(z)); };
+  std::vector<svm::polygon<Q>> polys{{{P(-4, -4, 5), P(-4, 4, 5), P(4, 4, 5), P(4, -4, 5)}, 0},
+                                     {{P(-1, -1, 2), P(-1, 1, 2), P(1, 1, 2), P(1, -1, 2)}, 1},
+                                     {{P(-1, -1, -2), P(-1, 1, -2), P(1, 1, -2), P(1, -1, -2)}, 2}};
+  auto vm = svm::build<Q>(polys, P(0, 0, 0));
+  CHECK(svm::visible_polygons(vm.map) == std::vector<std::int64_t>{0, 1, 2});
+  auto ring = svm::faces_of(vm.map, 0);
+  REQUIRE(ring.size() == 1);
+  auto near = svm::faces_of(vm.map, 1);
+  REQUIRE(near.size() == 1);
+  auto around = svm::adjacent_faces(vm.map, ring[0]);
+  // The ring touches the near square (its hole) and the background.
+  CHECK(around.size() == 2);
+  CHECK(std::count(around.begin(), around.end(), near[0]) == 1);
+  CHECK(svm::adjacent_faces(vm.map, near[0]) == std::vector<svm::index>{ring[0]});
+  CHECK(svm::face_cycles(vm.map)[ring[0]].size() == 2);
 }

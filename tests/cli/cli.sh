@@ -1,0 +1,112 @@
+#!/usr/bin/env bash
+# End-to-end tests of the genbsp program: outputs against the library's own
+# tests' facts, errors as one line with file:line and exit status 2, files
+# written whole or not at all.
+set -uo pipefail
+genbsp=$1
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0 passed=0
+check() { # check NAME CONDITION...
+  local name=$1
+  shift
+  if "$@"; then passed=$((passed + 1)); else
+    echo "FAILED: $name" >&2
+    failures=$((failures + 1))
+  fi
+}
+expect_error() { # expect_error NAME PATTERN COMMAND...: exit 2, one stderr line matching PATTERN
+  local name=$1 pattern=$2
+  shift 2
+  "$@" >"$work/out" 2>"$work/err"
+  local status=$?
+  check "$name: exit status 2 (got $status)" test "$status" -eq 2
+  check "$name: one line on stderr" test "$(wc -l <"$work/err")" -eq 1
+  check "$name: message matches '$pattern' (got '$(cat "$work/err")')" grep -qE -e "$pattern" "$work/err"
+}
+
+# A cube (outward faces) in front of a larger square, in OFF with exact decimals.
+cat >"$work/scene.off" <<'SCENE'
+OFF
+# a unit cube at z in [2, 3] and a square behind it at z = 5
+12 7 0
+-0.5 -0.5 2
+0.5 -0.5 2
+0.5 0.5 2
+-0.5 0.5 2
+-0.5 -0.5 3
+0.5 -0.5 3
+0.5 0.5 3
+-0.5 0.5 3
+-4 -4 5
+4 -4 5
+4 4 5
+-4 4 5
+4 0 3 2 1
+4 4 5 6 7
+4 0 1 5 4
+4 2 3 7 6
+4 0 4 7 3
+4 1 2 6 5
+4 8 11 10 9
+SCENE
+
+# locate: straight ahead the cube's near face (0); beside it the square (6); behind, nothing.
+printf '0 0 1\n0.1 0.1 1\n3 3 5\n0 0 -1\n# a comment line\n\n1 1 -1/3\n' >"$work/dirs"
+"$genbsp" locate "$work/scene.off" --eye 0,0,0 --dirs "$work/dirs" >"$work/located"
+check "locate answers" test "$(tr '\n' ' ' <"$work/located")" = "0 0 6 -1 -1 "
+"$genbsp" locate "$work/scene.off" --eye 0,0,0 --cull-backfaces --dirs - <"$work/dirs" >"$work/located2"
+check "locate from standard input, culling back faces" cmp -s "$work/located" "$work/located2"
+
+# stats: one JSON object with the required keys.
+"$genbsp" stats "$work/scene.off" --eye 0,0,0 >"$work/stats.json"
+for key in input_faces discarded_faces fragments v_nodes map map_unsimplified filter_fallbacks seconds peak_bytes; do
+  check "stats has $key" grep -q "\"$key\"" "$work/stats.json"
+done
+check "stats counts 7 input faces" grep -q '"input_faces":7' "$work/stats.json"
+# Seen from the origin: the near face of the cube, the square around it, the background.
+check "stats: 3 faces after simplifying" grep -q '"map":{"vertices":8,"edges":8,"faces":3}' "$work/stats.json"
+
+# map: the JSON schema, with a Python check of cycles and labels.
+"$genbsp" map "$work/scene.off" --eye 0,0,0 -o "$work/map.json"
+check "map schema" python3 - "$work/map.json" <<'PY'
+import json, math, sys
+m = json.load(open(sys.argv[1]))
+assert m["eye"] == [0, 0, 0]
+assert all(abs(math.hypot(*v) - 1) < 1e-12 for v in m["vertices"])
+labels = sorted(f["polygon"] for f in m["faces"])
+assert labels == [-1, 0, 6], labels
+square = next(f for f in m["faces"] if f["polygon"] == 6)
+assert len(square["cycles"]) == 2  # the square with the cube's face as a hole
+for f in m["faces"]:
+    for c in f["cycles"]:
+        assert all(0 <= v < len(m["vertices"]) for v in c)
+assert "stats" in m
+PY
+
+# scene: a family written as OFF, read back, with the suggested eye.
+eye=$("$genbsp" scene platforms --n 5 -o "$work/platforms.off")
+check "scene prints the eye" grep -qE '^[-0-9./]+,[-0-9./]+,[-0-9./]+$' <<<"$eye"
+"$genbsp" stats "$work/platforms.off" --eye "$eye" >"$work/p.json"
+check "platforms of 5 slabs: 6 faces" grep -q '"faces":6}' "$work/p.json"
+
+# Errors: one line naming file and line, exit status 2, no output file left behind.
+printf 'OFF\n3 1 0\n0 0 0\n1 0 zero\n0 1 0\n3 0 1 2\n' >"$work/bad.off"
+expect_error "bad number" "bad.off:4:" "$genbsp" stats "$work/bad.off" --eye 0,0,1
+printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n' >"$work/bad2.off"
+expect_error "index out of range" "bad2.off:6:" "$genbsp" map "$work/bad2.off" --eye 0,0,1 -o "$work/never.json"
+check "no output file after an error" test ! -e "$work/never.json"
+expect_error "missing file" "nothere.off" "$genbsp" stats "$work/nothere.off" --eye 0,0,0
+expect_error "bad eye" "--eye" "$genbsp" stats "$work/scene.off" --eye 1,2
+printf '0 0 1\n1 x 1\n' >"$work/bad.dirs"
+expect_error "bad direction line" "bad.dirs:2:" "$genbsp" locate "$work/scene.off" --eye 0,0,0 --dirs "$work/bad.dirs"
+expect_error "unknown option" "try --help" "$genbsp" stats "$work/scene.off" --eye 0,0,0 --frobnicate
+expect_error "unknown family" "try --help" "$genbsp" scene cubes -o "$work/x.off"
+for sub in map locate stats scene; do
+  "$genbsp" "$sub" --help >"$work/help" 2>&1
+  check "$sub --help exits 0" test $? -eq 0
+  check "$sub --help says what it does" grep -q "Usage" "$work/help"
+done
+
+echo "$passed passed, $failures failed"
+test "$failures" -eq 0

@@ -1,0 +1,346 @@
+// genbsp: the command-line program.  Subcommands map, locate, stats, scene.
+// Bad input gets one line on stderr (naming file and line where there is
+// one) and exit status 2; output files are written whole or not at all.
+#include <geometry/io/polygons.hpp>
+#include <geometry/io/scene.hpp>
+#include <svm/query.hpp>
+#include <svm/scenes.hpp>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <sys/resource.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+
+namespace {
+
+using geometry::rational;
+using json = nlohmann::ordered_json;
+
+/// Bad input: reported as one line, exit status 2.
+struct usage_error : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// "X,Y,Z" read exactly.
+geometry::e3::point<rational> parse_point(std::string const& text, std::string const& option) {
+  std::array<rational, 3> c;
+  std::size_t start = 0;
+  for (std::size_t i = 0; i < 3; ++i) {
+    std::size_t end = text.find(',', start);
+    if ((i < 2) != (end != std::string::npos))
+      throw usage_error(option + ": expected three numbers X,Y,Z, got '" + text + "'");
+    try {
+      c[i] = geometry::parse_number<rational>(text.substr(start, end == std::string::npos ? std::string::npos : end - start));
+    } catch (geometry::parse_error const& e) {
+      throw usage_error(option + ": " + e.what());
+    }
+    start = end + 1;
+  }
+  return {c[0], c[1], c[2]};
+}
+
+/// Writes `text` to `path` through a temporary file and a rename, so that the
+/// file is either complete or untouched; "-" is standard output.
+void write_file(std::string const& path, std::string const& text) {
+  if (path == "-") {
+    std::cout << text;
+    return;
+  }
+  std::filesystem::path target(path), tmp = target;
+  tmp += ".tmp" + std::to_string(::getpid());
+  {
+    std::ofstream out(tmp, std::ios::binary);
+    if (!out) throw usage_error(path + ": cannot write");
+    out << text;
+    out.flush();
+    if (!out) {
+      std::filesystem::remove(tmp);
+      throw usage_error(path + ": write failed");
+    }
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, target, ec);
+  if (ec) {
+    std::filesystem::remove(tmp);
+    throw usage_error(path + ": " + ec.message());
+  }
+}
+
+std::size_t peak_bytes() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return static_cast<std::size_t>(u.ru_maxrss) * 1024;
+}
+
+/// What map, locate and stats share: the scene, the eye and the build options.
+struct map_job {
+  std::string scene_path, eye_text, number = "exact";
+  bool no_simplify = false, cull = false;
+
+  void add_options(CLI::App& app) {
+    app.add_option("SCENE", scene_path, "scene file: OFF, OBJ or STL (face index = order in the file)")->required();
+    app.add_option("--eye", eye_text, "the observer, X,Y,Z (read exactly)")->required();
+    app.add_option("--number", number, "arithmetic: exact (default) or double")->check(CLI::IsMember({"exact", "double"}));
+    app.add_flag("--no-simplify", no_simplify, "keep the partition edges between faces of the same polygon");
+    app.add_flag("--cull-backfaces", cull, "drop polygons facing away (closed, outward-oriented solids only)");
+  }
+};
+
+struct loaded {
+  geometry::io::prepared prepared;
+  std::size_t input_faces = 0;
+};
+
+loaded load(map_job const& job) {
+  loaded l;
+  auto s = geometry::io::read_scene(job.scene_path);
+  l.input_faces = s.faces.size();
+  l.prepared = geometry::io::convex_polygons(s);
+  return l;
+}
+
+/// The map in either number type, then a function of it.
+template <class F> auto with_map(map_job const& job, loaded const& l, F&& f) {
+  auto eye = parse_point(job.eye_text, "--eye");
+  svm::build_options o;
+  o.simplify = !job.no_simplify;
+  o.cull_backfaces = job.cull;
+  if (job.number == "double") {
+    std::vector<svm::polygon<double>> polys;
+    for (auto const& p : l.prepared.polygons) {
+      std::vector<geometry::e3::point<double>> v;
+      for (auto const& q : p.vertices) v.emplace_back(q.x().convert_to<double>(), q.y().convert_to<double>(), q.z().convert_to<double>());
+      polys.push_back({std::move(v), p.face});
+    }
+    geometry::e3::point<double> e(eye.x().convert_to<double>(), eye.y().convert_to<double>(), eye.z().convert_to<double>());
+    return f(svm::build<double>(polys, e, o));
+  }
+  std::vector<svm::polygon<rational>> polys;
+  for (auto const& p : l.prepared.polygons) polys.push_back({p.vertices, p.face});
+  return f(svm::build<rational>(polys, eye, o));
+}
+
+json size_json(svm::map_size const& s) { return {{"vertices", s.vertices}, {"edges", s.edges}, {"faces", s.faces}}; }
+
+template <class FT> json stats_json(svm::visibility_map<FT> const& vm, loaded const& l) {
+  auto const& st = vm.stats;
+  return {{"input_faces", l.input_faces},
+          {"polygons", st.input_polygons},
+          {"degenerate_faces", l.prepared.degenerate_faces},
+          {"triangulated_faces", l.prepared.triangulated_faces},
+          {"discarded_faces", st.discarded_edge_on + st.discarded_backfacing},
+          {"discarded_edge_on", st.discarded_edge_on},
+          {"discarded_backfacing", st.discarded_backfacing},
+          {"fragments", st.fragments},
+          {"hidden_pieces", st.hidden_pieces},
+          {"v_nodes", st.v_nodes},
+          {"map", size_json(st.simplified)},
+          {"map_unsimplified", size_json(st.unsimplified)},
+          {"filter_fallbacks", st.filter_fallbacks},
+          {"seconds", st.seconds},
+          {"peak_bytes", peak_bytes()}};
+}
+
+/// MAP.json: unit vertices, faces with their cycles (counter-clockwise seen
+/// from outside the sphere, face on the left; the outer cycle first: the one
+/// whose left side is smallest).
+template <class FT> json map_json(svm::visibility_map<FT> const& vm, geometry::e3::point<rational> const& eye, loaded const& l) {
+  auto const& m = vm.map;
+  json vertices = json::array();
+  for (svm::index v = 0; v < m.vertices().size(); ++v) {
+    auto u = svm::unit(m, v);
+    vertices.push_back({u[0], u[1], u[2]});
+  }
+  auto cycles = svm::face_cycles(m);
+  json faces = json::array();
+  for (svm::index f = 0; f < m.faces().size(); ++f) {
+    std::vector<std::pair<double, json>> cs;
+    for (auto const& c : cycles[f]) {
+      double turn = 0;
+      json ids = json::array();
+      for (auto e : c) {
+        ids.push_back(m.origin(e));
+        auto v = svm::unit(m, m.target(e));
+        auto tin = geometry::cross(svm::unit_circle(m, e), v), tout = geometry::cross(svm::unit_circle(m, m.next(e)), v);
+        turn += std::atan2(geometry::dot(v, geometry::cross(tin, tout)), geometry::dot(tin, tout));
+      }
+      cs.emplace_back(2 * std::numbers::pi - turn, std::move(ids));
+    }
+    std::sort(cs.begin(), cs.end(), [](auto const& a, auto const& b) { return a.first < b.first; });
+    json jc = json::array();
+    for (auto& c : cs) jc.push_back(std::move(c.second));
+    faces.push_back({{"polygon", m.faces()[f].label}, {"cycles", std::move(jc)}});
+  }
+  return {{"eye", {eye.x().convert_to<double>(), eye.y().convert_to<double>(), eye.z().convert_to<double>()}},
+          {"vertices", std::move(vertices)},
+          {"faces", std::move(faces)},
+          {"stats", stats_json(vm, l)}};
+}
+
+/// An exact number as text: a decimal when it terminates, else p/q.
+std::string exact_text(rational const& q) {
+  auto den = boost::multiprecision::denominator(q);
+  geometry::integer d(den);
+  int twos = 0, fives = 0;
+  while (d % 2 == 0) d /= 2, ++twos;
+  while (d % 5 == 0) d /= 5, ++fives;
+  if (d != 1) return q.str();
+  int digits = std::max(twos, fives);
+  geometry::integer scale = boost::multiprecision::pow(geometry::integer(10), static_cast<unsigned>(digits));
+  geometry::integer n = geometry::integer(boost::multiprecision::numerator(q)) * (scale / geometry::integer(den));
+  bool neg = n < 0;
+  std::string s = (neg ? geometry::integer(-n) : n).str();
+  if (digits > 0) {
+    if (s.size() <= static_cast<std::size_t>(digits)) s.insert(0, static_cast<std::size_t>(digits) - s.size() + 1, '0');
+    s.insert(s.size() - static_cast<std::size_t>(digits), ".");
+  }
+  return (neg ? "-" : "") + s;
+}
+
+std::string off_text(svm::scenes::scene const& s) {
+  std::ostringstream out;
+  std::size_t nv = 0;
+  for (auto const& p : s.polygons) nv += p.vertices.size();
+  out << "OFF\n# genbsp scene; exact coordinates (p/q where a decimal would not terminate)\n";
+  out << nv << ' ' << s.polygons.size() << " 0\n";
+  for (auto const& p : s.polygons)
+    for (auto const& v : p.vertices) out << exact_text(v.x()) << ' ' << exact_text(v.y()) << ' ' << exact_text(v.z()) << '\n';
+  std::size_t k = 0;
+  for (auto const& p : s.polygons) {
+    out << p.vertices.size();
+    for (std::size_t i = 0; i < p.vertices.size(); ++i) out << ' ' << k++;
+    out << '\n';
+  }
+  return out.str();
+}
+
+int run(int argc, char** argv) {
+  CLI::App app{"genbsp: binary space partitioning for exact geometric computing"};
+  app.require_subcommand(1);
+
+  map_job mj;
+  std::string map_out;
+  auto* map = app.add_subcommand("map", "the spherical visibility map of a scene seen from an eye, as MAP.json");
+  mj.add_options(*map);
+  map->add_option("-o,--output", map_out, "output MAP.json (- for standard output)")->required();
+
+  map_job lj;
+  std::string dirs;
+  auto* locate = app.add_subcommand("locate", "the input face visible in each direction (one 'dx dy dz' per line) or -1");
+  lj.add_options(*locate);
+  locate->add_option("--dirs", dirs, "file of directions, - for standard input")->required();
+
+  map_job sj;
+  auto* stats = app.add_subcommand("stats", "sizes and times of a map, as one JSON object");
+  sj.add_options(*stats);
+
+  std::string family, scene_out;
+  std::size_t n = 8;
+  std::uint64_t seed = 1;
+  auto* scene = app.add_subcommand("scene", "write a scene of the paper's families; prints the suggested eye X,Y,Z");
+  scene->add_option("FAMILY", family, "bricks, hidden-bricks, platforms, random or terrain")
+      ->required()
+      ->check(CLI::IsMember({"bricks", "hidden-bricks", "platforms", "random", "terrain"}));
+  scene->add_option("--n", n, "size: boxes (bricks), slabs (platforms), cubes (random), grid side (terrain)")->check(CLI::Range(1, 1000000));
+  scene->add_option("--seed", seed, "random seed");
+  scene->add_option("-o,--output", scene_out, "output SCENE.off")->required();
+
+  try {
+    app.parse(argc, argv);
+  } catch (CLI::CallForHelp const& e) {
+    return app.exit(e);
+  } catch (CLI::CallForAllHelp const& e) {
+    return app.exit(e);
+  } catch (CLI::ParseError const& e) {
+    std::string what = e.what();
+    std::cerr << "genbsp: " << what.substr(0, what.find('\n')) << " (try --help)\n";
+    return 2;
+  }
+
+  if (*map) {
+    auto l = load(mj);
+    auto eye = parse_point(mj.eye_text, "--eye");
+    auto text = with_map(mj, l, [&](auto const& vm) { return map_json(vm, eye, l).dump(1) + "\n"; });
+    write_file(map_out, text);
+  } else if (*stats) {
+    auto l = load(sj);
+    std::cout << with_map(sj, l, [&](auto const& vm) { return stats_json(vm, l).dump(); }) << "\n";
+  } else if (*locate) {
+    auto l = load(lj);
+    std::ifstream file;
+    std::istream* in = &std::cin;
+    if (dirs != "-") {
+      file.open(dirs);
+      if (!file) throw usage_error(dirs + ": cannot open");
+      in = &file;
+    }
+    std::string name = dirs == "-" ? "<stdin>" : dirs;
+    // Read every direction before building, so that bad input fails fast.
+    std::vector<std::array<rational, 3>> ds;
+    std::string line;
+    for (std::size_t number = 1; std::getline(*in, line); ++number) {
+      auto hash = line.find('#');
+      if (hash != std::string::npos) line.erase(hash);
+      std::istringstream words(line);
+      std::vector<std::string> w{std::istream_iterator<std::string>(words), {}};
+      if (w.empty()) continue;
+      if (w.size() != 3) throw usage_error(name + ":" + std::to_string(number) + ": expected 'dx dy dz'");
+      std::array<rational, 3> d;
+      for (std::size_t i = 0; i < 3; ++i) try {
+          d[i] = geometry::parse_number<rational>(w[i]);
+        } catch (geometry::parse_error const& e) {
+          throw usage_error(name + ":" + std::to_string(number) + ": " + e.what());
+        }
+      if (d[0] == 0 && d[1] == 0 && d[2] == 0) throw usage_error(name + ":" + std::to_string(number) + ": the zero vector is no direction");
+      ds.push_back(d);
+    }
+    std::cout << with_map(lj, l, [&](auto const& vm) {
+      using FT = typename std::remove_cvref_t<decltype(vm)>::number_type;
+      std::string out;
+      for (auto const& d : ds) {
+        std::array<FT, 3> c;
+        for (std::size_t i = 0; i < 3; ++i) {
+          if constexpr (std::is_same_v<FT, rational>)
+            c[i] = d[i];
+          else
+            c[i] = d[i].template convert_to<double>();
+        }
+        out += std::to_string(svm::locate(vm, geometry::s2::point<FT>(c))) + "\n";
+      }
+      return out;
+    });
+  } else if (*scene) {
+    svm::scenes::scene s = family == "bricks"          ? svm::scenes::bricks(n)
+                           : family == "hidden-bricks" ? svm::scenes::hidden_bricks(n)
+                           : family == "platforms"     ? svm::scenes::platforms(n)
+                           : family == "random"        ? svm::scenes::random_cubes(n, seed)
+                                                       : svm::scenes::terrain(n, seed);
+    write_file(scene_out, off_text(s));
+    std::cout << exact_text(s.eye.x()) << ',' << exact_text(s.eye.y()) << ',' << exact_text(s.eye.z()) << "\n";
+  }
+  return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (usage_error const& e) {
+    std::cerr << "genbsp: " << e.what() << "\n";
+    return 2;
+  } catch (geometry::io::read_error const& e) {
+    std::cerr << "genbsp: " << e.what() << "\n";
+    return 2;
+  } catch (std::exception const& e) {
+    std::cerr << "genbsp: internal error: " << e.what() << "\n";
+    return 1;
+  }
+}
