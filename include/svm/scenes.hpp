@@ -6,6 +6,7 @@
 
 #include "build.hpp"
 
+#include <numbers>
 #include <random>
 #include <string>
 
@@ -127,6 +128,44 @@ inline scene terrain(std::size_t k, std::uint64_t seed = 1) {
     }
   long c = static_cast<long>(k) / 2;
   s.eye = P(Q(c) + Q(1, 3), Q(-static_cast<long>(k) / 3) + Q(1, 7), Q(60));
+  return s;
+}
+
+/// A closed sphere of 4k(k − 1) triangles with integer vertices (radius
+/// 100000, latitude–longitude grid, rounded), outward, seen from outside.
+inline scene sphere(std::size_t k) {
+  scene s;
+  k = std::max<std::size_t>(k, 3);
+  double const R = 100000, pi = std::numbers::pi;
+  std::vector<std::array<long, 3>> v{{0, 0, static_cast<long>(R)}};
+  for (std::size_t i = 1; i < k; ++i)
+    for (std::size_t j = 0; j < 2 * k; ++j) {
+      double t = pi * static_cast<double>(i) / static_cast<double>(k), p = pi * static_cast<double>(j) / static_cast<double>(k);
+      v.push_back({std::lround(R * std::sin(t) * std::cos(p)), std::lround(R * std::sin(t) * std::sin(p)), std::lround(R * std::cos(t))});
+    }
+  v.push_back({0, 0, -static_cast<long>(R)});
+  auto ring = [&](std::size_t i, std::size_t j) { return 1 + (i - 1) * 2 * k + j % (2 * k); };
+  std::uint32_t f = 0;
+  auto tri = [&](std::size_t a, std::size_t b, std::size_t c) {
+    auto const &A = v[a], &B = v[b], &C = v[c];
+    // Outward: the normal points away from the centre.
+    std::array<long, 3> u{B[0] - A[0], B[1] - A[1], B[2] - A[2]}, w{C[0] - A[0], C[1] - A[1], C[2] - A[2]};
+    double n0 = double(u[1]) * double(w[2]) - double(u[2]) * double(w[1]), n1 = double(u[2]) * double(w[0]) - double(u[0]) * double(w[2]),
+           n2 = double(u[0]) * double(w[1]) - double(u[1]) * double(w[0]);
+    bool out = n0 * double(A[0] + B[0] + C[0]) + n1 * double(A[1] + B[1] + C[1]) + n2 * double(A[2] + B[2] + C[2]) > 0;
+    auto P3 = [&](std::size_t i) { return P(Q(v[i][0]), Q(v[i][1]), Q(v[i][2])); };
+    s.polygons.push_back({out ? std::vector<P>{P3(a), P3(b), P3(c)} : std::vector<P>{P3(a), P3(c), P3(b)}, f++});
+  };
+  std::size_t south = v.size() - 1;
+  for (std::size_t j = 0; j < 2 * k; ++j) {
+    tri(0, ring(1, j), ring(1, j + 1));
+    tri(south, ring(k - 1, j + 1), ring(k - 1, j));
+    for (std::size_t i = 1; i + 1 < k; ++i) {
+      tri(ring(i, j), ring(i + 1, j), ring(i + 1, j + 1));
+      tri(ring(i, j), ring(i + 1, j + 1), ring(i, j + 1));
+    }
+  }
+  s.eye = P(Q(250000) + Q(1, 3), Q(120000) + Q(1, 7), Q(90000));
   return s;
 }
 

@@ -317,3 +317,23 @@ TEST_CASE("queries: visible polygons, their faces, adjacency", "[svm][query]") {
   CHECK(svm::adjacent_faces(vm.map, near[0]) == std::vector<svm::index>{ring[0]});
   CHECK(svm::face_cycles(vm.map)[ring[0]].size() == 2);
 }
+
+TEST_CASE("a closed sphere: culling back faces changes no answer", "[svm][scenes]") {
+  auto sc = svm::scenes::sphere(8); // 224 triangles
+  CHECK(sc.polygons.size() == 224);
+  auto two_sided = svm::build<Q>(sc.polygons, sc.eye);
+  auto culled = svm::build<Q>(sc.polygons, sc.eye, {.cull_backfaces = true});
+  CHECK(culled.stats.discarded_backfacing > 80);
+  check_map(two_sided, true);
+  check_map(culled, true);
+  int visible = 0;
+  for (int r = 0; r < 2000; ++r) {
+    // Directions towards the sphere's centre, spread around it.
+    s2::point<Q> d(std::array<Q, 3>{Q(-250000 + test::uniform(-80000, 80000)), Q(-120000 + test::uniform(-80000, 80000)),
+                                    Q(-90000 + test::uniform(-80000, 80000))});
+    auto a = svm::locate(two_sided, d);
+    CHECK(a == svm::locate(culled, d));
+    visible += a >= 0;
+  }
+  CHECK(visible > 500);
+}

@@ -245,10 +245,10 @@ int run(int argc, char** argv) {
   std::size_t n = 8;
   std::uint64_t seed = 1;
   auto* scene = app.add_subcommand("scene", "write a scene of the paper's families; prints the suggested eye X,Y,Z");
-  scene->add_option("FAMILY", family, "bricks, hidden-bricks, platforms, random or terrain")
+  scene->add_option("FAMILY", family, "bricks, hidden-bricks, platforms, random, terrain or sphere")
       ->required()
-      ->check(CLI::IsMember({"bricks", "hidden-bricks", "platforms", "random", "terrain"}));
-  scene->add_option("--n", n, "size: boxes (bricks), slabs (platforms), cubes (random), grid side (terrain)")->check(CLI::Range(1, 1000000));
+      ->check(CLI::IsMember({"bricks", "hidden-bricks", "platforms", "random", "terrain", "sphere"}));
+  scene->add_option("--n", n, "size: boxes (bricks), slabs (platforms), cubes (random), grid side (terrain), bands (sphere: 4n(n-1) triangles)")->check(CLI::Range(1, 1000000));
   scene->add_option("--seed", seed, "random seed");
   scene->add_option("-o,--output", scene_out, "output SCENE.off")->required();
 
@@ -321,7 +321,8 @@ int run(int argc, char** argv) {
                            : family == "hidden-bricks" ? svm::scenes::hidden_bricks(n)
                            : family == "platforms"     ? svm::scenes::platforms(n)
                            : family == "random"        ? svm::scenes::random_cubes(n, seed)
-                                                       : svm::scenes::terrain(n, seed);
+                           : family == "terrain"       ? svm::scenes::terrain(n, seed)
+                                                       : svm::scenes::sphere(n);
     write_file(scene_out, off_text(s));
     std::cout << exact_text(s.eye.x()) << ',' << exact_text(s.eye.y()) << ',' << exact_text(s.eye.z()) << "\n";
   }
