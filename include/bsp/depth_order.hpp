@@ -8,6 +8,7 @@
 #include "splitter.hpp"
 #include "tree.hpp"
 
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -32,7 +33,9 @@ using depth_order_tree = tree<G, fragment_list<G, Id>, none>;
 
 /// Autopartition: every node's hyperplane supports one of the input pieces
 /// left in its cell (chosen by `policy`); pieces crossing it are split, pieces
-/// lying in it stay at the node.
+/// lying in it stay at the node.  A policy may also offer a free cut: when it
+/// has a member `cut<G>(pieces, piece)` returning `std::optional<G::hyperplane>`
+/// and that returns a hyperplane, the node uses it instead (see `balanced`).
 template <geometry G, class Id = std::size_t, class Policy = input_order>
 depth_order_tree<G, Id> build_depth_order(fragment_list<G, Id> input, Policy policy = {}) {
   depth_order_tree<G, Id> t;
@@ -51,7 +54,9 @@ depth_order_tree<G, Id> build_depth_order(fragment_list<G, Id> input, Policy pol
       t.attach(w.parent, w.side, t.add_leaf());
       continue;
     }
-    auto h = G::supporting(w.pieces[policy.template choose<G>(w.pieces, piece)].piece);
+    std::optional<typename G::hyperplane> cut;
+    if constexpr (requires { policy.template cut<G>(w.pieces, piece); }) cut = policy.template cut<G>(w.pieces, piece);
+    typename G::hyperplane h = cut ? std::move(*cut) : G::supporting(w.pieces[policy.template choose<G>(w.pieces, piece)].piece);
     fragment_list<G, Id> here, neg, pos;
     for (auto& f : w.pieces) {
       auto r = G::split(f.piece, h);

@@ -10,7 +10,9 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <random>
+#include <utility>
 #include <vector>
 
 namespace bsp {
@@ -53,6 +55,64 @@ struct least_splits {
   }
   std::size_t samples;
   std::mt19937_64 rng;
+};
+
+/// Autopartition that stays shallow on convex input.  Every piece of a convex
+/// surface has all the others on one side of its hyperplane, so an
+/// autopartition of it is a chain, n deep, and costs n²/2 splits to build.
+/// Above `threshold` pieces, this policy samples `samples` candidates on a
+/// random subset of at most `probe` pieces; when even the best leaves fewer
+/// than one piece in `min_share` on its smaller side, it asks `cutter(pieces)`
+/// for a free hyperplane (for instance an axis-aligned plane through a median
+/// input vertex: input-derived, so the degree bound holds) that balances the
+/// cell.  At or below the threshold it is `random_order`.
+template <class Cutter> struct balanced {
+  explicit balanced(Cutter c, std::uint64_t seed = 1, std::size_t threshold_ = 64)
+      : cutter(std::move(c)), threshold(threshold_), rng(seed) {}
+
+  template <geometry G, class Item, class Piece> std::size_t choose(std::vector<Item> const& items, Piece&&) {
+    if (chosen != none_chosen && chosen < items.size()) {
+      std::size_t c = chosen;
+      chosen = none_chosen;
+      return c;
+    }
+    return std::uniform_int_distribution<std::size_t>(0, items.size() - 1)(rng);
+  }
+
+  template <geometry G, class Item, class Piece>
+  std::optional<typename G::hyperplane> cut(std::vector<Item> const& items, Piece&& piece) {
+    chosen = none_chosen;
+    std::size_t n = items.size();
+    if (n <= threshold) return std::nullopt;
+    std::uniform_int_distribution<std::size_t> pick(0, n - 1);
+    std::size_t best_share = 0, best = 0;
+    for (std::size_t t = 0; t < samples; ++t) {
+      std::size_t c = pick(rng);
+      auto const& h = G::supporting(piece(items[c]));
+      std::size_t neg = 0, pos = 0;
+      for (std::size_t i = 0; i < probe; ++i) {
+        auto r = G::split(piece(items[pick(rng)]), h);
+        neg += r.negative.has_value();
+        pos += r.positive.has_value();
+      }
+      std::size_t share = neg < pos ? neg : pos;
+      if (share > best_share || t == 0) best_share = share, best = c;
+    }
+    if (best_share * min_share >= probe) {
+      chosen = best;
+      return std::nullopt;
+    }
+    return cutter(items);
+  }
+
+  Cutter cutter;
+  std::size_t threshold;
+  std::size_t samples = 4, probe = 32, min_share = 8;
+  std::mt19937_64 rng;
+
+private:
+  static constexpr std::size_t none_chosen = ~std::size_t{0};
+  std::size_t chosen = none_chosen;
 };
 
 } // namespace bsp

@@ -155,7 +155,7 @@ visibility_map<FT> build(std::vector<polygon<FT>> const& polygons, geometry::e3:
   }
 
   // 2. The depth-order tree.
-  auto tree = bsp::build_depth_order<K3>(std::move(input), bsp::random_order(options.seed));
+  auto tree = bsp::build_depth_order<K3>(std::move(input), bsp::balanced(geometry::e3::axis_median_cut<FT>{}, options.seed));
 
   // 3. Front to back: each fragment into V.
   vm.v = typename visibility_map<FT>::v_tree(index{0});

@@ -131,6 +131,50 @@ TEST_CASE("E3 depth order: front to back along every sample ray", "[bsp][depth][
   CHECK(compared > 2000);
 }
 
+TEST_CASE("E3 depth order on a convex surface: balanced cuts keep the tree shallow", "[bsp][depth][e3]") {
+  // Triangles of z = x² + y² over an integer grid: a convex surface, so every
+  // triangle's plane has all the others on one side and an autopartition is a chain.
+  std::vector<std::vector<P3>> tris;
+  int const m = 12;
+  auto p = [](int x, int y) { return P3(Q(x), Q(y), Q(x * x + y * y)); };
+  for (int x = -m; x < m; ++x)
+    for (int y = -m; y < m; ++y) {
+      tris.push_back({p(x, y), p(x + 1, y), p(x + 1, y + 1)});
+      tris.push_back({p(x, y), p(x + 1, y + 1), p(x, y + 1)});
+    }
+  bsp::fragment_list<K3> input;
+  for (std::size_t i = 0; i < tris.size(); ++i) input.push_back({e3::convex_polygon<Q>(tris[i]), i});
+  auto chain = bsp::build_depth_order<K3>(input, bsp::random_order(3));
+  auto shallow = bsp::build_depth_order<K3>(input, bsp::balanced(e3::axis_median_cut<Q>{}, 3, 16));
+  auto dc = chain.statistics().depth, ds = shallow.statistics().depth;
+  std::cout << "convex surface of " << tris.size() << " triangles: depth " << dc << " (random order), " << ds << " (balanced)\n";
+  CHECK(dc >= tris.size() / 2); // coplanar pairs share a node
+  CHECK(ds * 8 <= dc);
+  // Front to back from inside the cup, below it and beside it, checked along rays.
+  int compared = 0;
+  for (V3 e : {V3{Q(1, 3), Q(-2, 7), Q(400)}, V3{Q(5, 2), Q(3), Q(-50)}, V3{Q(30), Q(1), Q(100)}}) {
+    std::vector<std::vector<P3>> order;
+    bsp::for_each_front_to_back(shallow, P3(e[0], e[1], e[2]), [&](auto const& f) { order.push_back(*e3::vertices(f.piece)); });
+    for (int r = 0; r < 300; ++r) {
+      // Aim at a point of the surface: rays from outside the cup cross it twice.
+      Q x(test::uniform(-4 * m, 4 * m), 4), y(test::uniform(-4 * m, 4 * m), 4);
+      V3 d{x - e[0], y - e[1], x * x + y * y - e[2]};
+      std::optional<Q> nearest;
+      for (auto const& poly : order) {
+        auto h = hit(poly, e, d);
+        if (!h) continue;
+        if (nearest) {
+          CHECK(*nearest <= *h);
+          ++compared;
+        }
+        if (!nearest || *nearest < *h) nearest = h;
+      }
+    }
+  }
+  std::cout << "convex surface: " << compared << " ordered pairs of hits checked\n";
+  CHECK(compared > 100);
+}
+
 TEST_CASE("E2 depth order: front to back for segment soups", "[bsp][depth][e2]") {
   using K2 = e2::exact_kernel;
   using P2 = e2::point<Q>;

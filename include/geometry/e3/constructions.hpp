@@ -5,8 +5,12 @@
 
 #include "predicates.hpp"
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <optional>
 #include <stdexcept>
+#include <vector>
 
 namespace geometry::e3 {
 
@@ -208,5 +212,51 @@ template <number FT> std::optional<FT> volume(polytope<FT> const& c) {
 }
 
 /// @}
+
+/// The free cut of `bsp::balanced` for polygons in space: the plane
+/// perpendicular to the axis along which the pieces' vertices spread most,
+/// through the median of their centres rounded to 24 bits of that spread (a
+/// constant of bounded size, so predicates keep their degree bound).  Nothing
+/// when fewer than one piece in eight would lie wholly on either side.
+template <number FT> struct axis_median_cut {
+  /// `items`: a vector of objects with a member `piece` (a sub-hyperplane).
+  template <class Items> std::optional<hyperplane<FT>> operator()(Items const& items) const {
+    std::size_t n = items.size();
+    std::vector<std::array<double, 6>> box(n); // lo x y z, hi x y z
+    std::array<double, 3> lo{HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+    for (std::size_t i = 0; i < n; ++i) {
+      auto& b = box[i];
+      b = {HUGE_VAL, HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+      for (auto const& x : homogeneous_vertices(items[i].piece)) {
+        double w = to_double(x[3]);
+        if (!(w > 0)) return std::nullopt; // unbounded pieces: leave it to autopartition
+        for (std::size_t k = 0; k < 3; ++k) {
+          double c = to_double(x[k]) / w;
+          b[k] = std::min(b[k], c), b[k + 3] = std::max(b[k + 3], c);
+        }
+      }
+      for (std::size_t k = 0; k < 3; ++k) lo[k] = std::min(lo[k], b[k]), hi[k] = std::max(hi[k], b[k + 3]);
+    }
+    std::array<std::size_t, 3> axes{0, 1, 2};
+    std::sort(axes.begin(), axes.end(), [&](auto a, auto b) { return hi[a] - lo[a] > hi[b] - lo[b]; });
+    std::vector<double> centre(n);
+    for (std::size_t k : axes) {
+      double spread = hi[k] - lo[k];
+      if (!(spread > 0)) break;
+      for (std::size_t i = 0; i < n; ++i) centre[i] = 0.5 * (box[i][k] + box[i][k + 3]);
+      std::nth_element(centre.begin(), centre.begin() + n / 2, centre.end());
+      int e = std::ilogb(spread);
+      double c = std::ldexp(std::round(std::ldexp(centre[n / 2], 24 - e)), e - 24);
+      double margin = spread * 1e-9;
+      std::size_t below = 0, above = 0;
+      for (auto const& b : box) below += b[k + 3] < c - margin, above += b[k] > c + margin;
+      if (below * 8 < n || above * 8 < n) continue;
+      std::array<FT, 4> h{FT(0), FT(0), FT(0), FT(-1) * FT(c)};
+      h[k] = FT(1);
+      return hyperplane<FT>(hvec<FT, 4>(h));
+    }
+    return std::nullopt;
+  }
+};
 
 } // namespace geometry::e3
