@@ -13,7 +13,10 @@
 #include <bsp/tree.hpp>
 #include <geometry/e3.hpp>
 
+#include <array>
 #include <chrono>
+#include <cmath>
+#include <stdexcept>
 #include <numeric>
 
 namespace svm {
@@ -25,10 +28,28 @@ template <geometry::number FT> struct polygon {
   std::uint32_t face;
 };
 
+/// A great circle given by its normal, in doubles: it is read exactly (a
+/// double is a rational of bounded size), so predicates on it keep their
+/// degree bound.  Its positive side is where `normal · d > 0`.
+using circle_normal = std::array<double, 3>;
+
+/// How a map is built.
 struct build_options {
   bool simplify = true;        ///< join adjacent faces with equal labels
   bool cull_backfaces = false; ///< drop polygons whose front faces away from the eye
   std::uint64_t seed = 1;      ///< splitter choice of the depth-order tree
+  /// A convex spherical polygon (its circles, the inside on their positive
+  /// sides): only directions inside it are mapped; the rest is one face
+  /// labelled `clipped`, and no scene polygon is projected there.  This is
+  /// the exact clipping of a view frustum.
+  std::vector<circle_normal> window{};
+  /// A convex spherical polygon left out of the map in the same way (its
+  /// inside labelled `clipped`): for projections that cannot show a small
+  /// neighbourhood of one direction.
+  std::vector<circle_normal> exclude{};
+  /// Great circles cut through the whole map first and kept by
+  /// simplification (a panorama's seam and poles).
+  std::vector<circle_normal> cuts{};
 };
 
 /// Sizes of a map.
@@ -41,7 +62,7 @@ struct build_statistics {
   std::size_t discarded_edge_on = 0;  ///< plane through the eye: no area on the sphere
   std::size_t discarded_backfacing = 0;
   std::size_t fragments = 0;          ///< of the depth-order tree
-  std::size_t hidden_pieces = 0;      ///< fragment pieces that reached a labelled leaf of V
+  std::size_t hidden_pieces = 0;      ///< fragment pieces that reached a labelled leaf of V (or a clipped one)
   std::size_t v_nodes = 0;
   map_size unsimplified, simplified;
   std::uint64_t filter_fallbacks = 0;
@@ -118,6 +139,78 @@ template <geometry::number FT> bool cuts(dcel<FT> const& m, index f, geometry::s
   return pos && neg;
 }
 
+/// Cuts circle `c` through every face of the map it crosses (the map and V
+/// still one face per leaf), each cut adding a node to V.
+template <geometry::number FT> void cut_everywhere(visibility_map<FT>& vm, geometry::s2::hyperplane<FT> const& c) {
+  auto& m = vm.map;
+  auto& v = vm.v;
+  struct leaf {
+    bsp::node_id n, parent;
+    int side;
+  };
+  std::vector<leaf> leaves, stack{{v.root(), bsp::node_id{}, 0}};
+  while (!stack.empty()) {
+    leaf l = stack.back();
+    stack.pop_back();
+    if (v.is_leaf(l.n)) leaves.push_back(l);
+    else {
+      stack.push_back({v.negative(l.n), l.n, -1});
+      stack.push_back({v.positive(l.n), l.n, +1});
+    }
+  }
+  index ci = none;
+  for (auto const& l : leaves) {
+    index f = v.leaf_data(l.n);
+    if (!cuts(m, f, c)) continue;
+    if (ci == none) ci = m.add_circle(c, provenance::cut);
+    index g = m.faces()[f].edge == none ? m.make_first_circle(ci) : m.split_face(f, ci);
+    bsp::node_id node = v.add_interior(c, v.add_leaf(g), v.add_leaf(f));
+    v.attach(l.parent, l.side, node);
+  }
+}
+
+/// Whether face `f` (a cell not crossed by `c`) lies on the positive side of `c`.
+template <geometry::number FT> bool on_positive_side(dcel<FT> const& m, index f, geometry::s2::hyperplane<FT> const& c) {
+  index e0 = m.faces()[f].edge, e = e0;
+  if (e0 == none) return true;
+  do {
+    auto s = m.side(m.origin(e), c);
+    if (s != geometry::sign::zero) return s == geometry::sign::positive;
+    e = m.next(e);
+  } while (e != e0);
+  return true;
+}
+
+/// Cuts the window's, the excluded polygon's and the free cuts' circles
+/// through the map and labels the faces outside the window or inside the
+/// excluded polygon `clipped`.
+template <geometry::number FT> void prepare(visibility_map<FT>& vm, build_options const& o) {
+  using circle = geometry::s2::hyperplane<FT>;
+  auto exact = [](std::vector<circle_normal> const& cs) {
+    std::vector<circle> out;
+    for (auto const& n : cs) {
+      if (!(std::isfinite(n[0]) && std::isfinite(n[1]) && std::isfinite(n[2])) || (n[0] == 0 && n[1] == 0 && n[2] == 0))
+        throw std::invalid_argument("svm::build: a window, exclusion or cut circle has a zero or non-finite normal");
+      out.emplace_back(geometry::hvec<FT, 3>(std::array<FT, 3>{FT(n[0]), FT(n[1]), FT(n[2])}));
+    }
+    return out;
+  };
+  auto window = exact(o.window), excluded = exact(o.exclude), free_cuts = exact(o.cuts);
+  for (auto const* group : {&window, &excluded, &free_cuts})
+    for (auto const& c : *group) cut_everywhere(vm, c);
+  auto& m = vm.map;
+  for (index f = 0; f < m.faces().size(); ++f) {
+    bool out = false;
+    for (auto const& c : window) out = out || !on_positive_side(m, f, c);
+    if (!excluded.empty()) {
+      bool in = true;
+      for (auto const& c : excluded) in = in && on_positive_side(m, f, c);
+      out = out || in;
+    }
+    if (out) m.face_at(f).label = clipped;
+  }
+}
+
 } // namespace detail
 
 /// Simplifies `vm` in place: removes every edge between faces with equal
@@ -159,6 +252,7 @@ visibility_map<FT> build(std::vector<polygon<FT>> const& polygons, geometry::e3:
 
   // 3. Front to back: each fragment into V.
   vm.v = typename visibility_map<FT>::v_tree(index{0});
+  detail::prepare(vm, options);
   auto& m = vm.map;
   auto& v = vm.v;
   struct work {
@@ -303,7 +397,8 @@ template <geometry::number FT> void simplify(visibility_map<FT>& vm) {
   std::vector<char> keep(ne, 0);
   for (index e = 0; e < ne; e += 2) {
     index a = he[e].face, b = he[e + 1].face;
-    if (faces[a].label != faces[b].label) {
+    bool kept_cut = m.circle_provenance()[he[e].circle] == provenance::cut && faces[a].label != clipped;
+    if (faces[a].label != faces[b].label || kept_cut) {
       keep[e] = keep[e + 1] = 1;
     } else {
       index ra = find(a), rb = find(b);

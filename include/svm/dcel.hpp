@@ -26,7 +26,11 @@ enum class provenance : std::uint8_t {
   scene_edge,  ///< the silhouette of an input polygon's edge
   depth_split, ///< a cut of the depth-order tree (an input polygon's plane)
   partition,   ///< the first partition of the sphere
+  cut,         ///< a circle cut in before the scene (a window's side, a panorama's seam), kept by simplify
 };
+
+/// The label of faces outside a build's window (see `build_options::window`).
+inline constexpr std::int64_t clipped = -2;
 
 /// The half-edge map.  Half-edge `e` runs counter-clockwise about its circle
 /// (`circle(e)`, the table circle negated for odd half-edges … see `circle_of`)

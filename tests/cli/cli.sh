@@ -102,7 +102,39 @@ printf '0 0 1\n1 x 1\n' >"$work/bad.dirs"
 expect_error "bad direction line" "bad.dirs:2:" "$genbsp" locate "$work/scene.off" --eye 0,0,0 --dirs "$work/bad.dirs"
 expect_error "unknown option" "try --help" "$genbsp" stats "$work/scene.off" --eye 0,0,0 --frobnicate
 expect_error "unknown family" "try --help" "$genbsp" scene cubes -o "$work/x.off"
-for sub in map locate stats scene; do
+# render: every format and projection; the id SVG shows faces 0 (the cube's
+# near face) and 6 (the square) in perspective; nothing else is visible.
+"$genbsp" render "$work/scene.off" --eye 0,0,0 --dir 0,0,1 --up 0,1,0 --style id --size 200x150 -o "$work/id.svg"
+check "render id: faces 0 and 6 only" test "$(grep -o 'data-face="[0-9]*"' "$work/id.svg" | sort -u | tr '\n' ' ')" = 'data-face="0" data-face="6" '
+check "render id: fill is index + 1" grep -q 'data-face="6" fill="#000007"' "$work/id.svg"
+for projection in perspective stereographic fisheye fisheye-equisolid equirectangular; do
+  for ext in svg pdf eps png; do
+    "$genbsp" render "$work/scene.off" --eye 0,0,0 --dir 0,0,1 --projection $projection --fov 150 --size 120x90 -o "$work/r-$projection.$ext"
+    check "render $projection $ext: written" test -s "$work/r-$projection.$ext"
+  done
+  check "render $projection: SVG parses" python3 -c 'import sys, xml.dom.minidom as m; m.parse(sys.argv[1])' "$work/r-$projection.svg"
+  check "render $projection: PDF header" grep -q '^%PDF-' "$work/r-$projection.pdf"
+  check "render $projection: PNG signature" test "$(head -c 8 "$work/r-$projection.png" | od -An -tx1 | tr -d ' \n')" = 89504e470d0a1a0a
+done
+"$genbsp" render "$work/scene.off" --eye 0,0,0 --dir 0,0,1 --projection cube --style lines -o "$work/cube.svg"
+for side in front right back left up down; do check "render cube: $side face" test -s "$work/cube-$side.svg"; done
+check "render cube: nothing behind the eye" test "$(grep -c '<path' "$work/cube-back.svg")" -eq 0
+check "render cube: the cube's outline ahead" test "$(grep -c '<path' "$work/cube-front.svg")" -ge 1
+expect_error "render: unknown format" "\.gif" "$genbsp" render "$work/scene.off" --eye 0,0,0 -o "$work/x.gif"
+expect_error "render: bad size" "--size" "$genbsp" render "$work/scene.off" --eye 0,0,0 --size 100by20 -o "$work/x.svg"
+expect_error "render: up along the view" "up vector" "$genbsp" render "$work/scene.off" --eye 0,0,0 --dir 0,0,1 --up 0,0,2 -o "$work/x.svg"
+expect_error "render: bad projection" "try --help" "$genbsp" render "$work/scene.off" --eye 0,0,0 --projection mercator -o "$work/x.svg"
+check "render: no file after an error" test ! -e "$work/x.svg"
+
+# view: one self-contained page with the map in place of the placeholder.
+"$genbsp" view "$work/scene.off" --eye 0,0,0 -o "$work/view.html"
+check "view: a page" grep -q '<html' "$work/view.html"
+check "view: the map embedded" grep -q '"polygon":6' "$work/view.html"
+check "view: no placeholder left" test "$(grep -c 'GENBSP_MAP\*/null' "$work/view.html")" -eq 0
+check "view: nothing fetched from the network" test "$(grep -cE '(src|href)="https?:' "$work/view.html")" -eq 0
+expect_error "view: not html" "\.html" "$genbsp" view "$work/scene.off" --eye 0,0,0 -o "$work/view.txt"
+
+for sub in map locate stats scene render view; do
   "$genbsp" "$sub" --help >"$work/help" 2>&1
   check "$sub --help exits 0" test $? -eq 0
   check "$sub --help says what it does" grep -q "Usage" "$work/help"

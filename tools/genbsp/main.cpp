@@ -1,13 +1,18 @@
-// genbsp: the command-line program.  Subcommands map, locate, stats, scene.
+// genbsp: the command-line program.  Subcommands map, locate, stats, render, scene.
 // Bad input gets one line on stderr (naming file and line where there is
 // one) and exit status 2; output files are written whole or not at all.
 #include <geometry/io/polygons.hpp>
 #include <geometry/io/scene.hpp>
+#include <svm/camera.hpp>
 #include <svm/query.hpp>
+#include <svm/render/cairo.hpp>
+#include <svm/render/svg.hpp>
 #include <svm/scenes.hpp>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
+
+#include "viewer_html.hpp"
 
 #include <sys/resource.h>
 
@@ -107,9 +112,8 @@ loaded load(map_job const& job) {
 }
 
 /// The map in either number type, then a function of it.
-template <class F> auto with_map(map_job const& job, loaded const& l, F&& f) {
+template <class F> auto with_map(map_job const& job, loaded const& l, F&& f, svm::build_options o = {}) {
   auto eye = parse_point(job.eye_text, "--eye");
-  svm::build_options o;
   o.simplify = !job.no_simplify;
   o.cull_backfaces = job.cull;
   if (job.number == "double") {
@@ -221,6 +225,57 @@ std::string off_text(svm::scenes::scene const& s) {
   return out.str();
 }
 
+/// "X,Y,Z" as doubles (directions and points of the camera).
+svm::vec3 parse_vec(std::string const& text, std::string const& option) {
+  auto p = parse_point(text, option);
+  return {p.x().convert_to<double>(), p.y().convert_to<double>(), p.z().convert_to<double>()};
+}
+
+/// What `genbsp render` knows of each input face: its colour and its plane.
+std::vector<svm::render::face_info> face_infos(loaded const& l, std::vector<std::optional<geometry::io::rgb>> const& colours) {
+  std::vector<svm::render::face_info> out(l.input_faces);
+  std::vector<char> seen(l.input_faces, 0);
+  for (auto const& p : l.prepared.polygons) {
+    if (p.face >= out.size() || seen[p.face]) continue;
+    seen[p.face] = 1;
+    auto& fi = out[p.face];
+    std::vector<svm::vec3> v;
+    for (auto const& q : p.vertices) v.push_back({q.x().convert_to<double>(), q.y().convert_to<double>(), q.z().convert_to<double>()});
+    using namespace svm::detail;
+    svm::vec3 n{0, 0, 0}, c{0, 0, 0};
+    for (std::size_t i = 0; i < v.size(); ++i) n = add3(n, cross3(v[i], v[(i + 1) % v.size()])), c = add3(c, v[i]);
+    if (norm3(n) > 0) fi.normal = unit3(n);
+    fi.centre = mul3(c, 1.0 / static_cast<double>(v.size()));
+    fi.offset = dot3(fi.normal, v[0]);
+    if (p.face < colours.size() && colours[p.face]) fi.colour = svm::render::rgb{colours[p.face]->r, colours[p.face]->g, colours[p.face]->b};
+  }
+  return out;
+}
+
+/// Writes a drawing to `path`, the format from its extension, whole or not at all.
+void write_drawing(svm::render::drawing const& d, std::string const& path, int digits) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (auto& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  if (ext == ".svg") return write_file(path, svm::render::to_svg(d, digits));
+  svm::render::cairo_format f = ext == ".pdf" ? svm::render::cairo_format::pdf
+                                : ext == ".eps" ? svm::render::cairo_format::eps
+                                                : svm::render::cairo_format::png;
+  std::filesystem::path target(path), tmp = target;
+  tmp += ".tmp" + std::to_string(::getpid()) + ext;
+  try {
+    svm::render::write_cairo(d, tmp.string(), f);
+  } catch (std::runtime_error const& e) {
+    std::filesystem::remove(tmp);
+    throw usage_error(path + ": cannot write (" + e.what() + ")");
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, target, ec);
+  if (ec) {
+    std::filesystem::remove(tmp);
+    throw usage_error(path + ": " + ec.message());
+  }
+}
+
 int run(int argc, char** argv) {
   CLI::App app{"genbsp: binary space partitioning for exact geometric computing"};
   app.require_subcommand(1);
@@ -240,6 +295,35 @@ int run(int argc, char** argv) {
   map_job sj;
   auto* stats = app.add_subcommand("stats", "sizes and times of a map, as one JSON object");
   sj.add_options(*stats);
+
+  map_job rj;
+  std::string render_out, look_text, dir_text, up_text, size_text, projection_name = "perspective",
+                           style_name = "shaded", light_text, shift_text;
+  double fov = 0, crease = 0, tolerance = 0.1;
+  int digits = 2;
+  auto* render = app.add_subcommand("render", "draw a scene from an eye as SVG, PDF, EPS or PNG, hidden parts removed exactly");
+  rj.add_options(*render);
+  render->add_option("--look", look_text, "a point to look at, X,Y,Z (default: the scene's centre)");
+  render->add_option("--dir", dir_text, "or a direction to look in, X,Y,Z");
+  render->add_option("--up", up_text, "the image's vertical, X,Y,Z (default 0,0,1, or 0,1,0 when looking along z)");
+  render->add_option("--fov", fov, "horizontal field of view in degrees (default 60; 360 for equirectangular)")->check(CLI::Range(0.001, 360.0));
+  render->add_option("--size", size_text, "image size WxH in pixels (default 800x600; 1600x800 for equirectangular)");
+  render->add_option("--projection", projection_name,
+                     "perspective, stereographic, fisheye (equidistant), fisheye-equisolid, equirectangular, or cube (six perspective files OUT-front, -right, -back, -left, -up, -down)")
+      ->check(CLI::IsMember({"perspective", "stereographic", "fisheye", "fisheye-equidistant", "fisheye-equisolid", "equirectangular", "cube"}));
+  render->add_option("--style", style_name, "shaded (default), flat, lines or id")->check(CLI::IsMember({"shaded", "flat", "lines", "id"}));
+  render->add_option("--light", light_text, "direction towards the light, X,Y,Z (default: a head light at the eye)");
+  render->add_option("--crease", crease, "lines: draw edges between polygons only where their planes meet at more than this angle (degrees)")->check(CLI::Range(0.0, 180.0));
+  render->add_option("--shift", shift_text, "perspective image-plane shift SX,SY in image half-widths (keeps verticals vertical)");
+  render->add_option("--tolerance", tolerance, "fisheye and panorama: arcs subdivided to this many pixels (default 0.1)")->check(CLI::Range(0.001, 100.0));
+  render->add_option("--precision", digits, "SVG coordinate decimals (default 2)")->check(CLI::Range(0, 9));
+  render->add_option("-o,--output", render_out, "output OUT.svg, .pdf, .eps or .png (format from the extension)")->required();
+
+  map_job vj;
+  std::string view_out;
+  auto* view = app.add_subcommand("view", "write one self-contained HTML page that looks around from the eye (docs/viewer.md)");
+  vj.add_options(*view);
+  view->add_option("-o,--output", view_out, "output VIEWER.html (opens from disk, no network)")->required();
 
   std::string family, scene_out;
   std::size_t n = 8;
@@ -316,6 +400,147 @@ int run(int argc, char** argv) {
       }
       return out;
     });
+  } else if (*render) {
+    std::string ext = std::filesystem::path(render_out).extension().string();
+    for (auto& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    if (ext != ".svg" && ext != ".pdf" && ext != ".eps" && ext != ".png")
+      throw usage_error(render_out + ": unknown output format '" + ext + "' (use .svg, .pdf, .eps or .png)");
+    if (!look_text.empty() && !dir_text.empty()) throw usage_error("--look and --dir: give one of them");
+    bool equirect = projection_name == "equirectangular", cube = projection_name == "cube";
+    int w = equirect ? 1600 : 800, h = equirect ? 800 : 600;
+    if (cube) w = h = 512;
+    if (!size_text.empty()) {
+      auto x = size_text.find('x');
+      try {
+        std::size_t used1 = 0, used2 = 0;
+        if (x == std::string::npos) throw std::invalid_argument("x");
+        w = std::stoi(size_text.substr(0, x), &used1);
+        h = std::stoi(size_text.substr(x + 1), &used2);
+        if (used1 != x || used2 != size_text.size() - x - 1) throw std::invalid_argument("x");
+      } catch (std::exception const&) {
+        throw usage_error("--size: expected WxH in pixels, got '" + size_text + "'");
+      }
+      if (w < 1 || h < 1 || w > 20000 || h > 20000) throw usage_error("--size: each side must be 1 to 20000 pixels");
+    }
+    auto l = load(rj);
+    auto scene_colours = [&] {
+      std::vector<std::optional<geometry::io::rgb>> c;
+      auto sc = geometry::io::read_scene(rj.scene_path);
+      for (auto const& f : sc.faces) c.push_back(f.colour);
+      return c;
+    }();
+    auto infos = face_infos(l, scene_colours);
+    svm::vec3 eye = parse_vec(rj.eye_text, "--eye");
+    svm::vec3 forward;
+    if (!dir_text.empty()) forward = parse_vec(dir_text, "--dir");
+    else {
+      svm::vec3 target{0, 0, 0};
+      if (!look_text.empty()) target = parse_vec(look_text, "--look");
+      else {
+        // The centre of the scene's bounding box.
+        svm::vec3 lo{HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+        for (auto const& p : l.prepared.polygons)
+          for (auto const& q : p.vertices) {
+            svm::vec3 v{q.x().convert_to<double>(), q.y().convert_to<double>(), q.z().convert_to<double>()};
+            for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], v[k]), hi[k] = std::max(hi[k], v[k]);
+          }
+        if (lo[0] <= hi[0]) target = {(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2};
+        else target = svm::detail::add3(eye, {1, 0, 0});
+      }
+      forward = svm::detail::sub3(target, eye);
+    }
+    svm::camera cam;
+    cam.forward = forward;
+    if (!up_text.empty()) cam.up = parse_vec(up_text, "--up");
+    else {
+      using namespace svm::detail;
+      double along = std::abs(forward[2]) / norm3(forward);
+      cam.up = along > 1 - 1e-9 ? svm::vec3{0, 1, 0} : svm::vec3{0, 0, 1};
+    }
+    cam.width = w;
+    cam.height = h;
+    cam.hfov = fov > 0 ? fov : (equirect ? 360 : cube ? 90 : 60);
+    if (!shift_text.empty()) {
+      auto sh = parse_point(shift_text + ",0", "--shift");
+      cam.shift_x = sh.x().convert_to<double>();
+      cam.shift_y = sh.y().convert_to<double>();
+    }
+    svm::render::options ro;
+    ro.style = *svm::render::style_from_name(style_name);
+    ro.crease = crease;
+    ro.tolerance = tolerance;
+    ro.eye = eye;
+    if (!light_text.empty()) ro.light = parse_vec(light_text, "--light");
+    // The views to draw: one, or the six faces of a cube.
+    std::vector<std::pair<svm::camera, std::string>> views;
+    if (cube) {
+      if (cam.width != cam.height) throw usage_error("--size: a cube map's faces are square");
+      cam.hfov = 90;
+      svm::projector base(cam, svm::projection::perspective);
+      auto f = base.forward(), r = base.right(), u = base.up();
+      auto neg = [](svm::vec3 v) { return svm::detail::mul3(v, -1); };
+      std::filesystem::path out(render_out);
+      auto named = [&](std::string const& what) {
+        return (out.parent_path() / (out.stem().string() + "-" + what + out.extension().string())).string();
+      };
+      std::array<std::tuple<svm::vec3, svm::vec3, std::string>, 6> faces{
+          {{f, u, "front"}, {r, u, "right"}, {neg(f), u, "back"}, {neg(r), u, "left"}, {u, neg(f), "up"}, {neg(u), f, "down"}}};
+      for (auto const& [d, up, what] : faces) {
+        svm::camera c = cam;
+        c.forward = d;
+        c.up = up;
+        views.push_back({c, named(what)});
+      }
+    } else {
+      views.push_back({cam, render_out});
+    }
+    auto kind = cube ? svm::projection::perspective : *svm::projection_from_name(projection_name);
+    std::vector<std::pair<svm::render::drawing, std::string>> drawings;
+    for (auto const& [c, path] : views) {
+      std::optional<svm::projector> pr;
+      try {
+        pr.emplace(c, kind);
+      } catch (std::invalid_argument const& e) {
+        throw usage_error(e.what());
+      }
+      svm::build_options o = pr->window_options();
+      auto d = with_map(rj, l, [&](auto const& vm) { return svm::render::draw(vm, *pr, infos, ro); }, o);
+      drawings.push_back({std::move(d), path});
+    }
+    for (auto const& [d, path] : drawings) write_drawing(d, path, digits);
+  } else if (*view) {
+    std::string ext = std::filesystem::path(view_out).extension().string();
+    for (auto& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    if (ext != ".html" && ext != ".htm") throw usage_error(view_out + ": the viewer is an .html file");
+    auto l = load(vj);
+    auto eye = parse_point(vj.eye_text, "--eye");
+    json colours = json::array();
+    for (auto const& f : geometry::io::read_scene(vj.scene_path).faces) {
+      if (!f.colour) {
+        colours.push_back(nullptr);
+        continue;
+      }
+      char hex[8];
+      auto byte = [](double c) { return static_cast<unsigned>(std::lround(std::clamp(c, 0.0, 1.0) * 255)); };
+      std::snprintf(hex, sizeof hex, "#%02x%02x%02x", byte(f.colour->r), byte(f.colour->g), byte(f.colour->b));
+      colours.push_back(hex);
+    }
+    auto map_text = with_map(vj, l, [&](auto const& vm) { return map_json(vm, eye, l).dump(); });
+    std::string page(genbsp_tool::viewer_html());
+    auto put = [&](std::string const& placeholder, std::string const& value) {
+      auto at = page.find(placeholder);
+      if (at == std::string::npos || page.find(placeholder, at + 1) != std::string::npos)
+        throw std::logic_error("the viewer page must hold " + placeholder + " once");
+      page.replace(at, placeholder.size(), value);
+    };
+    // JSON text never holds "</script" unescaped: dump() writes '/' as is, so escape it.
+    auto safe = [](std::string t) {
+      for (std::size_t at = 0; (at = t.find("</", at)) != std::string::npos; at += 3) t.replace(at, 2, "<\\/");
+      return t;
+    };
+    put("/*GENBSP_MAP*/null", safe(map_text));
+    put("/*GENBSP_COLORS*/null", safe(colours.dump()));
+    write_file(view_out, page);
   } else if (*scene) {
     svm::scenes::scene s = family == "bricks"          ? svm::scenes::bricks(n)
                            : family == "hidden-bricks" ? svm::scenes::hidden_bricks(n)

@@ -1,0 +1,403 @@
+/// @file
+/// A drawing of a visibility map: the map's faces as closed paths in image
+/// coordinates (one path per visible region, holes included, even–odd fill),
+/// or its visible edges as polylines.  The writers (`svg.hpp`, `cairo.hpp`)
+/// turn a drawing into a file.
+///
+/// Great arcs become straight segments in a perspective view and exact
+/// circular arcs (or straight segments, for circles through the projection's
+/// pole) in a stereographic one; in the fisheye and panorama projections they
+/// are subdivided on the sphere until the chord is within `tolerance` pixels
+/// of the image of the arc.
+#pragma once
+
+#include "../camera.hpp"
+#include "../query.hpp"
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace svm::render {
+
+/// A colour, components in [0, 1].
+struct rgb {
+  double r = 0, g = 0, b = 0;
+};
+
+enum class style {
+  shaded, ///< Lambert shading of each polygon's colour
+  flat,   ///< each polygon's colour
+  lines,  ///< visible edges only, black polylines
+  id,     ///< fill colour = polygon index + 1 as #RRGGBB, no stroke, no background
+};
+
+inline std::optional<style> style_from_name(std::string_view s) {
+  if (s == "shaded") return style::shaded;
+  if (s == "flat") return style::flat;
+  if (s == "lines") return style::lines;
+  if (s == "id") return style::id;
+  return std::nullopt;
+}
+
+/// One drawing command.  An arc runs about `centre` with radius `radius`
+/// from the current point to (`x`, `y`), turning in the direction of
+/// increasing image angle (clockwise on screen, y down) when `clockwise`;
+/// `large` says it spans more than half a turn.
+struct command {
+  enum kind_t : std::uint8_t { move, line, arc, close } kind;
+  double x = 0, y = 0;
+  double cx = 0, cy = 0, radius = 0;
+  bool clockwise = false, large = false;
+};
+
+/// A filled region: one face of the map.
+struct region {
+  std::vector<command> path;
+  std::int64_t polygon = -1; ///< the input face seen there
+  rgb fill;
+};
+
+/// A drawing: regions, polylines (style `lines`), size and background.
+struct drawing {
+  int width = 0, height = 0;
+  render::style style = render::style::shaded;
+  std::optional<rgb> background; ///< none: transparent
+  std::vector<region> regions;
+  std::vector<std::vector<pixel>> polylines;
+  /// Style `lines`: visible edges drawn, an edge being a maximal piece of one
+  /// great circle (pieces of one circle joined end to end count once).
+  std::size_t edges = 0;
+};
+
+/// What the drawing knows of each input face: colour and plane.
+struct face_info {
+  std::optional<rgb> colour;
+  vec3 normal{0, 0, 0}; ///< unit normal (front side), zero when unknown
+  double offset = 0;    ///< the plane is `normal · x = offset`
+  vec3 centre{0, 0, 0}; ///< a point of the face (for a head light)
+};
+
+struct options {
+  render::style style = render::style::shaded;
+  double tolerance = 0.1; ///< pixels, for arcs subdivided on the sphere
+  /// Style `lines`: an edge between two polygons is drawn only when the
+  /// angle between their planes exceeds this (degrees); at 0, only edges
+  /// between polygons in one plane are left out.
+  double crease = 0;
+  std::optional<vec3> light; ///< direction towards the light; none: a head light at the eye
+  vec3 eye{0, 0, 0};         ///< the observer (for the head light)
+  rgb background{1, 1, 1};
+};
+
+/// The id style's colour of polygon `p`: p + 1 as 24-bit RGB.
+inline rgb id_colour(std::int64_t p) {
+  auto v = static_cast<std::uint32_t>(p + 1);
+  return {((v >> 16) & 255) / 255.0, ((v >> 8) & 255) / 255.0, (v & 255) / 255.0};
+}
+
+/// A neutral palette: soft colours of varied hue, from the polygon index.
+inline rgb palette(std::int64_t p) {
+  double h = std::fmod(static_cast<double>(p) * 0.618033988749895, 1.0) * 6;
+  double s = 0.28, v = 0.88, c = v * s, x = c * (1 - std::abs(std::fmod(h, 2.0) - 1)), m = v - c;
+  int k = static_cast<int>(h) % 6;
+  double r[6] = {c, x, 0, 0, x, c}, g[6] = {x, c, c, x, 0, 0}, b[6] = {0, 0, x, c, c, x};
+  return {r[k] + m, g[k] + m, b[k] + m};
+}
+
+namespace detail {
+
+using svm::detail::add3;
+using svm::detail::cross3;
+using svm::detail::dot3;
+using svm::detail::mul3;
+using svm::detail::norm3;
+using svm::detail::unit3;
+
+/// Appends the image of the minor arc p → q (about the unit normal `n`) as
+/// points after the current one, subdividing on the sphere.
+inline void subdivide(projector const& pr, vec3 const& p, vec3 const& q, int side, double tol, std::vector<pixel>& out,
+                      int depth = 0) {
+  vec3 m = unit3(add3(p, q));
+  pixel P = pr.project(p, side), Q = pr.project(q, side), M = pr.project(m, side);
+  double dx = Q.x - P.x, dy = Q.y - P.y, len = std::hypot(dx, dy);
+  double dev = len > 0 ? std::abs((M.x - P.x) * dy - (M.y - P.y) * dx) / len : std::hypot(M.x - P.x, M.y - P.y);
+  double mx = (P.x + Q.x) / 2 - M.x, my = (P.y + Q.y) / 2 - M.y;
+  dev = std::max(dev, std::hypot(mx, my) * 0.5);
+  bool wide = dot3(p, q) < std::cos(0.15);
+  if (depth < 24 && (dev > tol || wide)) {
+    subdivide(pr, p, m, side, tol, out, depth + 1);
+    subdivide(pr, m, q, side, tol, out, depth + 1);
+    return;
+  }
+  out.push_back(Q);
+}
+
+/// Whether a unit vector is a pole of the panorama (its longitude undefined).
+inline bool is_pole(projector const& pr, vec3 const& d) { return std::abs(dot3(d, pr.up())) > 1 - 1e-12; }
+
+/// The side of the panorama's seam that the points of one face lie on.
+inline int seam_side(projector const& pr, std::vector<vec3> const& pts) {
+  double best = 0;
+  for (auto const& p : pts) {
+    double x = dot3(p, pr.right());
+    if (std::abs(x) > std::abs(best)) best = x;
+  }
+  return best >= 0 ? 1 : -1;
+}
+
+/// Appends one cycle of the map (its vertices `v`, edge normals `n`) to `path`.
+inline void cycle_path(projector const& pr, std::vector<vec3> const& v, std::vector<vec3> const& n, double tol,
+                       std::vector<command>& path) {
+  std::size_t k = v.size();
+  if (k == 0) return;
+  auto const kind = pr.kind();
+  if (kind == projection::perspective) {
+    for (std::size_t i = 0; i < k; ++i) {
+      pixel P = pr.project(v[i]);
+      path.push_back({i == 0 ? command::move : command::line, P.x, P.y});
+    }
+    path.push_back({command::close});
+    return;
+  }
+  if (kind == projection::stereographic) {
+    pixel P0 = pr.project(v[0]);
+    path.push_back({command::move, P0.x, P0.y});
+    for (std::size_t i = 0; i < k; ++i) {
+      vec3 const &p = v[i], &q = v[(i + 1) % k];
+      pixel P = pr.project(p), Q = pr.project(q), M = pr.project(unit3(add3(p, q)));
+      // The circle through P, M, Q; a straight segment when they are collinear
+      // (a great circle through the pole of the projection).
+      double ax = M.x - P.x, ay = M.y - P.y, bx = Q.x - P.x, by = Q.y - P.y;
+      double d = 2 * (ax * by - ay * bx);
+      double chord = std::hypot(bx, by);
+      double sag = chord > 0 ? std::abs(ax * by - ay * bx) / chord : 0;
+      (void)n;
+      if (sag < 1e-3 || std::abs(d) < 1e-12) {
+        path.push_back({command::line, Q.x, Q.y});
+        continue;
+      }
+      double a2 = ax * ax + ay * ay, b2 = bx * bx + by * by;
+      double ux = (by * a2 - ay * b2) / d, uy = (ax * b2 - bx * a2) / d;
+      double cx = P.x + ux, cy = P.y + uy, r = std::hypot(ux, uy);
+      // P → M → Q turning clockwise on screen (y down) means increasing angle.
+      bool cw = (M.x - P.x) * (Q.y - M.y) - (M.y - P.y) * (Q.x - M.x) > 0;
+      // Large when the centre is on M's side of the chord.
+      double sm = bx * (M.y - P.y) - by * (M.x - P.x), sc = bx * (cy - P.y) - by * (cx - P.x);
+      bool large = (sm > 0) == (sc > 0) && std::abs(sc) > 1e-12 * r * chord;
+      command c{command::arc, Q.x, Q.y, cx, cy, r, cw, large};
+      path.push_back(c);
+    }
+    path.push_back({command::close});
+    return;
+  }
+  // Fisheye and panorama: subdivide on the sphere.
+  int side = kind == projection::equirectangular ? seam_side(pr, v) : 0;
+  std::vector<pixel> pts;
+  for (std::size_t i = 0; i < k; ++i) {
+    vec3 const &p = v[i], &q = v[(i + 1) % k];
+    if (kind == projection::equirectangular && (is_pole(pr, p) || is_pole(pr, q))) {
+      // An arc from or to a pole is a meridian: a vertical segment; at the
+      // pole itself the boundary runs along the image's top or bottom edge
+      // from the longitude of the arc before to that of the arc after.
+      vec3 const& pole = is_pole(pr, p) ? p : q;
+      vec3 const& other = is_pole(pr, p) ? q : p;
+      double lon = projector::longitude(pr.local(other), side);
+      double lat = std::asin(std::clamp(dot3(pole, pr.up()), -1.0, 1.0));
+      pixel at_pole{pr.cam().width / 2.0 + pr.scale() * lon, pr.cam().height / 2.0 - pr.scale() * lat};
+      if (is_pole(pr, p)) {
+        pts.push_back(at_pole); // the pole, at the outgoing arc's longitude
+        pts.push_back(pr.project(q, side));
+      } else {
+        if (i == 0) pts.push_back(pr.project(p, side));
+        pts.push_back(at_pole); // the pole, at the incoming arc's longitude
+      }
+      continue;
+    }
+    if (i == 0) pts.push_back(pr.project(p, side));
+    subdivide(pr, p, q, side, tol, pts);
+  }
+  for (std::size_t i = 0; i < pts.size(); ++i) path.push_back({i == 0 ? command::move : command::line, pts[i].x, pts[i].y});
+  path.push_back({command::close});
+}
+
+inline rgb shade(rgb c, double intensity) { return {c.r * intensity, c.g * intensity, c.b * intensity}; }
+
+} // namespace detail
+
+/// The drawing of map `vm` through projector `pr`.  The map must have been
+/// built with `pr.window_options()` (faces labelled `clipped` are not drawn,
+/// and each face must lie in one quarter of the panorama).  `faces[p]`
+/// describes input face `p` (may be shorter: unknown faces get the palette).
+template <geometry::number FT>
+drawing draw(visibility_map<FT> const& vm, projector const& pr, std::vector<face_info> const& faces, options const& o) {
+  using namespace detail;
+  auto const& m = vm.map;
+  drawing out;
+  out.width = pr.cam().width;
+  out.height = pr.cam().height;
+  out.style = o.style;
+  if (o.style != style::id) out.background = o.background;
+  std::vector<vec3> vertex(m.vertices().size());
+  for (index v = 0; v < vertex.size(); ++v) vertex[v] = unit(m, v);
+  auto info = [&](std::int64_t p) -> face_info const* {
+    return p >= 0 && static_cast<std::size_t>(p) < faces.size() ? &faces[static_cast<std::size_t>(p)] : nullptr;
+  };
+  auto colour = [&](std::int64_t p) {
+    if (o.style == style::id) return id_colour(p);
+    auto const* fi = info(p);
+    rgb c = fi && fi->colour ? *fi->colour : palette(p);
+    if (o.style == style::flat || !fi || norm3(fi->normal) == 0) return c;
+    vec3 l = o.light ? unit3(*o.light) : unit3(svm::detail::sub3(o.eye, fi->centre));
+    return shade(c, 0.2 + 0.8 * std::abs(dot3(l, fi->normal)));
+  };
+
+  if (o.style == style::lines) {
+    // Visible edges: different polygons on the two sides, neither clipped, and
+    // (between two polygons) a crease sharper than `o.crease`.
+    double const cos_crease = std::cos(o.crease * std::numbers::pi / 180);
+    auto drawn = [&](std::int64_t a, std::int64_t b) {
+      if (a == b || a == clipped || b == clipped) return false;
+      if (a < 0 || b < 0) return true;
+      auto const *fa = info(a), *fb = info(b);
+      if (!fa || !fb || norm3(fa->normal) == 0 || norm3(fb->normal) == 0) return true;
+      double c = dot3(fa->normal, fb->normal);
+      bool same_plane = c > 1 - 1e-12 && std::abs(fa->offset - fb->offset) <= 1e-9 * (1 + std::abs(fa->offset));
+      if (o.crease <= 0) return !same_plane;
+      return c < cos_crease;
+    };
+    struct piece {
+      index from, to;
+      std::vector<pixel> pts;
+      vec3 circle; ///< unit normal of the edge's great circle
+    };
+    std::vector<piece> pieces;
+    auto const& he = m.half_edges();
+    for (index e = 0; e < he.size(); e += 2) {
+      if (!drawn(m.faces()[he[e].face].label, m.faces()[he[e + 1].face].label)) continue;
+      vec3 p = vertex[m.origin(e)], q = vertex[m.target(e)];
+      std::vector<pixel> pts;
+      if (pr.kind() == projection::perspective) pts = {pr.project(p), pr.project(q)};
+      else {
+        int side = pr.kind() == projection::equirectangular ? seam_side(pr, {p, q}) : 0;
+        if (pr.kind() == projection::equirectangular && (is_pole(pr, p) || is_pole(pr, q))) {
+          vec3 const& pole = is_pole(pr, p) ? p : q;
+          vec3 const& other = is_pole(pr, p) ? q : p;
+          double lon = projector::longitude(pr.local(other), side);
+          double lat = std::asin(std::clamp(dot3(pole, pr.up()), -1.0, 1.0));
+          pixel at_pole{pr.cam().width / 2.0 + pr.scale() * lon, pr.cam().height / 2.0 - pr.scale() * lat};
+          pts = is_pole(pr, p) ? std::vector<pixel>{at_pole, pr.project(q, side)} : std::vector<pixel>{pr.project(p, side), at_pole};
+        } else {
+          pts.push_back(pr.project(p, side));
+          subdivide(pr, p, q, side, o.tolerance, pts);
+        }
+      }
+      pieces.push_back({m.origin(e), m.target(e), std::move(pts), unit_circle(m, e)});
+    }
+    // Pieces of one great circle joined end to end are one edge.
+    std::size_t straight_joins = 0;
+    // Join pieces into polylines at vertices where exactly two meet (and the
+    // images agree: not across the panorama's seam); then order them greedily
+    // to shorten pen travel.
+    std::map<index, std::vector<std::size_t>> at;
+    for (std::size_t i = 0; i < pieces.size(); ++i) at[pieces[i].from].push_back(i), at[pieces[i].to].push_back(i);
+    std::vector<char> used(pieces.size(), 0);
+    auto close_to = [](pixel a, pixel b) { return std::hypot(a.x - b.x, a.y - b.y) < 1e-6; };
+    auto same_circle = [&](std::size_t a, std::size_t b) { return norm3(cross3(pieces[a].circle, pieces[b].circle)) < 1e-12; };
+    // Extends `line`, whose last piece is `last`, from vertex `end`; returns the last piece and vertex.
+    auto extend = [&](std::vector<pixel>& line, std::size_t last, index end) -> std::pair<std::size_t, index> {
+      while (true) {
+        auto const& list = at[end];
+        if (list.size() != 2) return {last, end};
+        std::size_t next = used[list[0]] ? list[1] : list[0];
+        if (used[next]) return {last, end};
+        auto const& pc = pieces[next];
+        bool fwd = pc.from == end;
+        pixel start = fwd ? pc.pts.front() : pc.pts.back();
+        if (!close_to(start, line.back())) return {last, end};
+        used[next] = 1;
+        if (same_circle(next, last)) {
+          ++straight_joins;
+          // A perspective image is straight there: the joint is no corner.
+          if (pr.kind() == projection::perspective && line.size() >= 2) line.pop_back();
+        }
+        last = next;
+        if (fwd) line.insert(line.end(), pc.pts.begin() + 1, pc.pts.end());
+        else line.insert(line.end(), pc.pts.rbegin() + 1, pc.pts.rend());
+        end = fwd ? pc.to : pc.from;
+      }
+    };
+    std::vector<std::vector<pixel>> lines;
+    auto run = [&](std::size_t i) {
+      used[i] = 1;
+      auto const& pc = pieces[i];
+      std::vector<pixel> line = pc.pts;
+      auto [tail, end] = extend(line, i, pc.to);
+      if (end == pc.from && tail != i && close_to(line.front(), line.back())) {
+        // A closed loop: its start is a joint too.
+        if (same_circle(tail, i)) {
+          ++straight_joins;
+          if (pr.kind() == projection::perspective && line.size() >= 3) {
+            line.erase(line.begin());
+            line.back() = line.front();
+          }
+        }
+        lines.push_back(std::move(line));
+        return;
+      }
+      std::reverse(line.begin(), line.end());
+      extend(line, i, pc.from);
+      lines.push_back(std::move(line));
+    };
+    for (std::size_t i = 0; i < pieces.size(); ++i)
+      if (!used[i] && (at[pieces[i].from].size() != 2 || at[pieces[i].to].size() != 2)) run(i);
+    for (std::size_t i = 0; i < pieces.size(); ++i)
+      if (!used[i]) run(i);
+    out.edges = pieces.size() - straight_joins;
+    std::vector<char> done(lines.size(), 0);
+    pixel pen{0, 0};
+    for (std::size_t n = 0; n < lines.size(); ++n) {
+      std::size_t best = 0;
+      bool reverse = false;
+      double bd = HUGE_VAL;
+      for (std::size_t i = 0; i < lines.size(); ++i) {
+        if (done[i]) continue;
+        double a = std::hypot(lines[i].front().x - pen.x, lines[i].front().y - pen.y);
+        double b = std::hypot(lines[i].back().x - pen.x, lines[i].back().y - pen.y);
+        if (a < bd) bd = a, best = i, reverse = false;
+        if (b < bd) bd = b, best = i, reverse = true;
+      }
+      done[best] = 1;
+      if (reverse) std::reverse(lines[best].begin(), lines[best].end());
+      pen = lines[best].back();
+      out.polylines.push_back(std::move(lines[best]));
+    }
+    return out;
+  }
+
+  auto cycles = face_cycles(m);
+  for (index f = 0; f < m.faces().size(); ++f) {
+    std::int64_t label = m.faces()[f].label;
+    if (label < 0) continue;
+    region rg;
+    rg.polygon = label;
+    rg.fill = colour(label);
+    if (cycles[f].empty()) {
+      // The whole sphere: the whole image.
+      rg.path = {{command::move, 0, 0}, {command::line, double(out.width), 0}, {command::line, double(out.width), double(out.height)},
+                 {command::line, 0, double(out.height)}, {command::close}};
+    }
+    for (auto const& c : cycles[f]) {
+      std::vector<vec3> v, n;
+      for (index e : c) v.push_back(vertex[m.origin(e)]), n.push_back(unit_circle(m, e));
+      cycle_path(pr, v, n, o.tolerance, rg.path);
+    }
+    out.regions.push_back(std::move(rg));
+  }
+  return out;
+}
+
+} // namespace svm::render
