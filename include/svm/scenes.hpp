@@ -1,12 +1,16 @@
 /// @file
 /// The paper's four scene families (section 3.3), with exact integer
 /// coordinates, and the suggested eye for each: Bricks, Hidden Bricks,
-/// Platforms, Random; and a terrain mesh for large closed-ish inputs.
+/// Platforms, Random; a terrain mesh and a sphere for large inputs; and a
+/// furnished room with colours, for pictures.
 #pragma once
 
 #include "build.hpp"
 
+#include <array>
+#include <cstdint>
 #include <numbers>
+#include <optional>
 #include <random>
 #include <string>
 
@@ -17,6 +21,8 @@ namespace svm::scenes {
 struct scene {
   std::vector<polygon<geometry::rational>> polygons;
   geometry::e3::point<geometry::rational> eye;
+  /// Colours (0..255) by polygon, when the scene has them (empty otherwise).
+  std::vector<std::array<std::uint8_t, 3>> colours;
 };
 
 using Q = geometry::rational;
@@ -33,6 +39,7 @@ inline void add_box(scene& s, P const& lo, P const& hi) {
                                      {v(0, 0, 0), v(0, 0, 1), v(0, 1, 1), v(0, 1, 0)},
                                      {v(1, 0, 0), v(1, 1, 0), v(1, 1, 1), v(1, 0, 1)}}};
   for (auto const& face : q) s.polygons.push_back({{face[0], face[1], face[2], face[3]}, f++});
+  if (!s.colours.empty()) s.colours.resize(s.polygons.size(), {200, 200, 200});
 }
 
 /// Bricks: n/2 long bars in front, n/2 perpendicular bars behind them and a
@@ -166,6 +173,96 @@ inline scene sphere(std::size_t k) {
     }
   }
   s.eye = P(Q(250000) + Q(1, 3), Q(120000) + Q(1, 7), Q(90000));
+  return s;
+}
+
+/// A furnished room, 6 m × 5 m × 2.8 m in centimetres, with colours: walls,
+/// floor and ceiling facing inwards, a window and a door, a table with four
+/// chairs, a sofa, a bookcase with books, a rug, a lamp and a picture; seen
+/// from a standing eye by the door.  Boxes only (some touching, some
+/// sharing planes): a scene that looks like something and is full of the
+/// degenerate contacts real models have.
+inline scene room() {
+  scene s;
+  s.colours.reserve(512);
+  using rgb8 = std::array<std::uint8_t, 3>;
+  auto box = [&](long x0, long y0, long z0, long x1, long y1, long z1, rgb8 c) {
+    std::size_t first = s.polygons.size();
+    add_box(s, P(Q(x0), Q(y0), Q(z0)), P(Q(x1), Q(y1), Q(z1)));
+    s.colours.resize(s.polygons.size(), c);
+    for (std::size_t i = first; i < s.polygons.size(); ++i) s.colours[i] = c;
+  };
+  // An inward quadrilateral (counter-clockwise seen from inside the room).
+  auto quad = [&](std::array<std::array<long, 3>, 4> const& v, rgb8 c) {
+    std::vector<P> ps;
+    for (auto const& a : v) ps.push_back(P(Q(a[0]), Q(a[1]), Q(a[2])));
+    s.polygons.push_back({std::move(ps), static_cast<std::uint32_t>(s.polygons.size())});
+    s.colours.push_back(c);
+  };
+  rgb8 const wall{236, 228, 212}, floor{170, 120, 78}, ceiling{248, 248, 244}, wood{139, 94, 60}, dark{92, 64, 44},
+      fabric{70, 110, 150}, white{245, 245, 240}, rug{160, 52, 58}, frame{60, 60, 60};
+  long const X = 600, Y = 500, Z = 280;
+  quad({{{0, 0, 0}, {X, 0, 0}, {X, Y, 0}, {0, Y, 0}}}, floor);
+  quad({{{0, 0, Z}, {0, Y, Z}, {X, Y, Z}, {X, 0, Z}}}, ceiling);
+  quad({{{0, 0, 0}, {0, Y, 0}, {0, Y, Z}, {0, 0, Z}}}, wall);         // x = 0
+  quad({{{0, 0, 0}, {0, 0, Z}, {X, 0, Z}, {X, 0, 0}}}, wall);         // y = 0
+  quad({{{0, Y, 0}, {X, Y, 0}, {X, Y, Z}, {0, Y, Z}}}, wall);         // y = Y
+  // The wall x = X with a window 200 × 120 at height 90: four pieces around it.
+  quad({{{X, 0, 0}, {X, 0, Z}, {X, 150, Z}, {X, 150, 0}}}, wall);
+  quad({{{X, 350, 0}, {X, 350, Z}, {X, Y, Z}, {X, Y, 0}}}, wall);
+  quad({{{X, 150, 0}, {X, 150, 90}, {X, 350, 90}, {X, 350, 0}}}, wall);
+  quad({{{X, 150, 210}, {X, 150, Z}, {X, 350, Z}, {X, 350, 210}}}, wall);
+  box(X - 8, 146, 86, X + 4, 354, 90, white); // sill and frame of the window
+  box(X - 8, 146, 210, X + 4, 354, 214, white);
+  box(X - 8, 146, 90, X + 4, 150, 210, white);
+  box(X - 8, 350, 90, X + 4, 354, 210, white);
+  box(X - 4, 248, 90, X + 2, 252, 210, white);
+  box(X + 120, -200, -50, X + 130, 700, 400, {150, 190, 225}); // the sky beyond the window
+  box(20, -4, 0, 110, 4, 210, wood);                             // the door, in the wall y = 0
+  box(95, 4, 100, 101, 10, 106, {200, 170, 60});                 // its handle
+  // The rug, the table and four chairs.
+  box(200, 150, 0, 460, 350, 1, rug);
+  box(250, 205, 72, 410, 295, 77, wood);
+  for (auto [x, y] : std::array<std::array<long, 2>, 4>{{{255, 210}, {399, 210}, {255, 284}, {399, 284}}}) box(x, y, 0, x + 6, y + 6, 72, dark);
+  auto chair = [&](long x, long y, int facing) { // facing: +1 looks towards +y, −1 towards −y
+    box(x, y, 44, x + 44, y + 44, 48, wood);
+    for (auto [dx, dy] : std::array<std::array<long, 2>, 4>{{{0, 0}, {40, 0}, {0, 40}, {40, 40}}}) box(x + dx, y + dy, 0, x + dx + 4, y + dy + 4, 44, dark);
+    long by = facing > 0 ? y : y + 40;
+    box(x, by, 48, x + 44, by + 4, 95, wood);
+  };
+  chair(280, 150, +1);
+  chair(338, 150, +1);
+  chair(280, 306, -1);
+  chair(338, 306, -1);
+  // The sofa against the wall y = Y.
+  box(150, 410, 0, 390, 490, 42, fabric);
+  box(150, 470, 42, 390, 490, 90, fabric);
+  box(150, 410, 42, 170, 470, 62, fabric);
+  box(370, 410, 42, 390, 470, 62, fabric);
+  // The bookcase against the wall x = 0, with books of many colours.
+  box(2, 300, 0, 40, 304, 200, wood);
+  box(2, 476, 0, 40, 480, 200, wood);
+  box(0, 300, 0, 2, 480, 200, dark);
+  std::mt19937_64 rng(7);
+  auto uni = [&](long lo, long hi) { return std::uniform_int_distribution<long>(lo, hi)(rng); };
+  for (long z = 0; z <= 200; z += 40) {
+    box(2, 304, z, 40, 476, z + 3, wood);
+    if (z == 200) break;
+    for (long y = 306; y < 470;) {
+      long w = uni(3, 7), h = uni(24, 34);
+      if (y + w > 474) break;
+      rgb8 c{static_cast<std::uint8_t>(uni(40, 220)), static_cast<std::uint8_t>(uni(40, 200)), static_cast<std::uint8_t>(uni(40, 200))};
+      box(6, y, z + 3, 34, y + w, z + 3 + h, c);
+      y += w + uni(0, 2);
+    }
+  }
+  // A standing lamp and a picture on the wall y = Y.
+  box(520, 420, 0, 550, 450, 3, frame);
+  box(533, 433, 3, 537, 437, 150, frame);
+  box(515, 415, 150, 555, 455, 185, {250, 225, 160});
+  box(180, Y - 3, 130, 360, Y, 230, frame);
+  box(190, Y - 4, 140, 350, Y - 3, 220, {90, 140, 110});
+  s.eye = P(Q(80) + Q(1, 3), Q(60) + Q(1, 7), Q(165) + Q(1, 11));
   return s;
 }
 

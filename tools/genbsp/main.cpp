@@ -217,9 +217,11 @@ std::string off_text(svm::scenes::scene const& s) {
   for (auto const& p : s.polygons)
     for (auto const& v : p.vertices) out << exact_text(v.x()) << ' ' << exact_text(v.y()) << ' ' << exact_text(v.z()) << '\n';
   std::size_t k = 0;
-  for (auto const& p : s.polygons) {
+  for (std::size_t f = 0; f < s.polygons.size(); ++f) {
+    auto const& p = s.polygons[f];
     out << p.vertices.size();
     for (std::size_t i = 0; i < p.vertices.size(); ++i) out << ' ' << k++;
+    if (f < s.colours.size()) out << ' ' << int(s.colours[f][0]) << ' ' << int(s.colours[f][1]) << ' ' << int(s.colours[f][2]);
     out << '\n';
   }
   return out.str();
@@ -329,9 +331,9 @@ int run(int argc, char** argv) {
   std::size_t n = 8;
   std::uint64_t seed = 1;
   auto* scene = app.add_subcommand("scene", "write a scene of the paper's families; prints the suggested eye X,Y,Z");
-  scene->add_option("FAMILY", family, "bricks, hidden-bricks, platforms, random, terrain or sphere")
+  scene->add_option("FAMILY", family, "bricks, hidden-bricks, platforms, random, terrain, sphere, or room (a furnished room with colours; --n is ignored)")
       ->required()
-      ->check(CLI::IsMember({"bricks", "hidden-bricks", "platforms", "random", "terrain", "sphere"}));
+      ->check(CLI::IsMember({"bricks", "hidden-bricks", "platforms", "random", "terrain", "sphere", "room"}));
   scene->add_option("--n", n, "size: boxes (bricks), slabs (platforms), cubes (random), grid side (terrain), bands (sphere: 4n(n-1) triangles)")->check(CLI::Range(1, 1000000));
   scene->add_option("--seed", seed, "random seed");
   scene->add_option("-o,--output", scene_out, "output SCENE.off")->required();
@@ -547,6 +549,7 @@ int run(int argc, char** argv) {
                            : family == "platforms"     ? svm::scenes::platforms(n)
                            : family == "random"        ? svm::scenes::random_cubes(n, seed)
                            : family == "terrain"       ? svm::scenes::terrain(n, seed)
+                           : family == "room"          ? svm::scenes::room()
                                                        : svm::scenes::sphere(n);
     write_file(scene_out, off_text(s));
     std::cout << exact_text(s.eye.x()) << ',' << exact_text(s.eye.y()) << ',' << exact_text(s.eye.z()) << "\n";

@@ -32,7 +32,7 @@ enum class style {
   shaded, ///< Lambert shading of each polygon's colour
   flat,   ///< each polygon's colour
   lines,  ///< visible edges only, black polylines
-  id,     ///< fill colour = polygon index + 1 as #RRGGBB, no stroke, no background
+  id,     ///< fill colour = polygon index + 1 as \#RRGGBB, no stroke, no background
 };
 
 inline std::optional<style> style_from_name(std::string_view s) {
