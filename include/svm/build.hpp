@@ -16,6 +16,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <stdexcept>
 #include <numeric>
 
@@ -50,6 +51,9 @@ struct build_options {
   /// Great circles cut through the whole map first and kept by
   /// simplification (a panorama's seam and poles).
   std::vector<circle_normal> cuts{};
+  /// Called with the fraction of the scene's fragments inserted so far (0 to
+  /// 1), about every percent, when set: for progress on long builds.
+  std::function<void(double)> progress{};
 };
 
 /// Sizes of a map.
@@ -255,6 +259,11 @@ visibility_map<FT> build(std::vector<polygon<FT>> const& polygons, geometry::e3:
   detail::prepare(vm, options);
   auto& m = vm.map;
   auto& v = vm.v;
+  std::size_t total = 0, next_report = 0;
+  if (options.progress) {
+    bsp::for_each_front_to_back(tree, eye, [&](auto const&) { ++total; });
+    options.progress(0.0);
+  }
   struct work {
     bsp::node_id n, parent;
     int side;
@@ -264,6 +273,10 @@ visibility_map<FT> build(std::vector<polygon<FT>> const& polygons, geometry::e3:
   std::vector<sign> signs;
   bsp::for_each_front_to_back(tree, eye, [&](auto const& fr) {
     ++st.fragments;
+    if (options.progress && st.fragments >= next_report) {
+      options.progress(static_cast<double>(st.fragments - 1) / static_cast<double>(total));
+      next_report = st.fragments + total / 100 + 1;
+    }
     stack.push_back({v.root(), bsp::node_id{}, 0, detail::project(fr.piece, eye)});
     while (!stack.empty()) {
       work w = std::move(stack.back());
@@ -310,6 +323,7 @@ visibility_map<FT> build(std::vector<polygon<FT>> const& polygons, geometry::e3:
   st.v_nodes = v.statistics().interior_nodes;
   st.unsimplified = {m.vertices().size(), m.half_edges().size() / 2, m.faces().size()};
   st.simplified = st.unsimplified;
+  if (options.progress) options.progress(1.0);
   if (options.simplify) simplify(vm);
   st.filter_fallbacks = filter_stats().fallbacks - fallbacks0;
   st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -67,6 +67,12 @@ check "stats counts 7 input faces" grep -q '"input_faces":7' "$work/stats.json"
 # Seen from the origin: the near face of the cube, the square around it, the background.
 check "stats: 3 faces after simplifying" grep -q '"map":{"vertices":8,"edges":8,"faces":3}' "$work/stats.json"
 
+# --progress: lines on standard error, ending at 100 %; standard output unchanged.
+"$genbsp" stats "$work/scene.off" --eye 0,0,0 --progress >"$work/stats2.json" 2>"$work/progress"
+check "progress reaches 100 %" grep -q 'mapping 100%' "$work/progress"
+check "progress starts at 0 %" grep -q 'mapping 0%' "$work/progress"
+check "progress leaves standard output alone" test "$(head -c 40 "$work/stats2.json")" = "$(head -c 40 "$work/stats.json")"
+
 # map: the JSON schema, with a Python check of cycles and labels.
 "$genbsp" map "$work/scene.off" --eye 0,0,0 -o "$work/map.json"
 check "map schema" python3 - "$work/map.json" <<'PY'

@@ -15,7 +15,9 @@
 #include "viewer_html.hpp"
 
 #include <sys/resource.h>
+#include <unistd.h>
 
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -87,9 +89,10 @@ std::size_t peak_bytes() {
 /// What map, locate and stats share: the scene, the eye and the build options.
 struct map_job {
   std::string scene_path, eye_text, number = "exact";
-  bool no_simplify = false, cull = false;
+  bool no_simplify = false, cull = false, progress = false;
 
   void add_options(CLI::App& app) {
+    app.add_flag("--progress", progress, "report the build's progress on standard error (always on a terminal, after a second)");
     app.add_option("SCENE", scene_path, "scene file: OFF, OBJ or STL (face index = order in the file)")->required();
     app.add_option("--eye", eye_text, "the observer, X,Y,Z (read exactly)")->required();
     app.add_option("--number", number, "arithmetic: exact (default) or double")->check(CLI::IsMember({"exact", "double"}));
@@ -116,6 +119,25 @@ template <class F> auto with_map(map_job const& job, loaded const& l, F&& f, svm
   auto eye = parse_point(job.eye_text, "--eye");
   o.simplify = !job.no_simplify;
   o.cull_backfaces = job.cull;
+  // Progress: on a terminal, one updated line once the build has run a
+  // second; with --progress elsewhere, a line every 10 %.
+  bool tty = ::isatty(2) != 0;
+  if (tty || job.progress) {
+    auto start = std::chrono::steady_clock::now();
+    o.progress = [tty, start, shown = false, last = -10](double f) mutable {
+      double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      int percent = static_cast<int>(f * 100);
+      if (tty) {
+        if (elapsed < 1 && !shown) return;
+        shown = true;
+        std::fprintf(stderr, "\rgenbsp: mapping %3d%% (%.0f s)%s", percent, elapsed, f >= 1 ? "\n" : "");
+      } else if (percent / 10 != last / 10 || f >= 1) {
+        std::fprintf(stderr, "genbsp: mapping %d%% (%.1f s)\n", percent, elapsed);
+      }
+      last = percent;
+      std::fflush(stderr);
+    };
+  }
   if (job.number == "double") {
     std::vector<svm::polygon<double>> polys;
     for (auto const& p : l.prepared.polygons) {
