@@ -443,8 +443,11 @@ row measure(char const* input, std::vector<typename Family::raw> const& raws, op
   std::vector<signed char> plain_signs;
   {
     std::vector<typename Family::template query<double>> qd(raws.begin(), raws.end());
+    // Plain floating point: the double kernel's exact signs switched off.
+    geometry::filter_config().exact_double_signs = false;
     r.plain = time_mode(qd, o);
     plain_signs = signs_of(qd);
+    geometry::filter_config().exact_double_signs = true;
   }
   std::vector<typename Family::template query<rational>> qr(raws.begin(), raws.end());
   auto& config = geometry::filter_config();

@@ -53,6 +53,10 @@ struct filter_statistics {
 struct filter_settings {
   bool enabled = true;     ///< false: every predicate is evaluated exactly ("always exact")
   bool track_bits = false; ///< true: record the bit length of every exact input
+  /// Over `double`: true (the default) gives the exact sign of the
+  /// polynomial of the given doubles, filtered; false evaluates it once in
+  /// floating point ("plain double", whose signs may contradict each other).
+  bool exact_double_signs = true;
 };
 
 /// This thread's counters.
@@ -233,6 +237,12 @@ template <std::size_t N> std::array<sfloat, N> to_sfloat(approximation<N> const&
   return r;
 }
 
+template <std::size_t N> std::array<sfloat, N> to_sfloat(std::array<double, N> const& a) noexcept {
+  std::array<sfloat, N> r;
+  for (std::size_t i = 0; i < N; ++i) r[i] = {a[i], std::fabs(a[i])};
+  return r;
+}
+
 template <std::size_t N> void track_bits(std::array<rational, N> const& c) {
   auto& s = filter_stats();
   for (auto const& x : c) s.max_exact_bits = std::max(s.max_exact_bits, bit_length(x));
@@ -240,10 +250,6 @@ template <std::size_t N> void track_bits(std::array<rational, N> const& c) {
 
 } // namespace detail
 
-/// The sign of `f(v...)`, where `f` is a lambda computing a
-/// polynomial, homogeneous in each argument, written generically over
-/// `std::array<T, N>` arguments with `+ − ×` only.  Over `double` it is
-/// evaluated once; over an exact field it is filtered, then exact.
 namespace detail {
 
 /// The rest of a filtered predicate once the fast comparison failed: certain
@@ -262,16 +268,46 @@ template <class F, std::size_t... N>
   return integer_sign(f, integer_multiple(v.exact())...);
 }
 
+/// Over double, once the fast comparison failed: a certain zero, else the
+/// exact sign of the polynomial of the doubles' exact values.
+template <class F, std::size_t... N>
+[[gnu::noinline]] sign double_slow(F const& f, sfloat r, hvec<double, N> const&... v) {
+  if (r.m == 0.0) return sign::zero;
+  ++filter_stats().fallbacks;
+  auto exact = [](auto const& c) {
+    std::array<rational, std::tuple_size_v<std::remove_cvref_t<decltype(c)>>> q;
+    for (std::size_t i = 0; i < q.size(); ++i) q[i] = rational(c[i]);
+    return integer_multiple(q);
+  };
+  return integer_sign(f, exact(v.exact())...);
+}
+
 } // namespace detail
 
 /// The sign of `f(v...)`, where `f` is a lambda computing a polynomial,
 /// homogeneous in each argument, written generically over `std::array<T, N>`
-/// arguments with `+ − ×` only.  Over `double` it is evaluated once; over an
-/// exact field it is filtered, then exact.
+/// arguments with `+ − ×` only.  It is filtered, then exact: over an exact
+/// field, the exact value's sign; over `double`, the exact sign of the
+/// polynomial of the given doubles (the objects are rounded, the signs are
+/// not).
 template <class F, number FT, std::size_t... N>
 sign filtered_sign(F&& f, hvec<FT, N> const&... v) {
   if constexpr (!exact_field<FT>) {
-    return sign_of(f(v.exact()...));
+    // Over double the objects are rounded, but their signs are not: the
+    // polynomial is filtered, then evaluated exactly over the doubles'
+    // rational values.  So every predicate on one set of double objects
+    // tells the same story (three circles rounded apart from a common point
+    // meet in a tiny triangle, consistently), which is what keeps a map built
+    // over double a valid map.
+    if (!filter_config().exact_double_signs) return sign_of(f(v.exact()...));
+    ++filter_stats().evaluations;
+    int const depth = f(std::array<detail::depth_counter, N>{}...).d;
+    constexpr double u = std::numeric_limits<double>::epsilon() / 2;
+    detail::sfloat r = f(detail::to_sfloat(v.exact())...);
+    double bound = (2.0 * depth * u) * r.m;
+    if (r.v > bound) return sign::positive;
+    if (r.v < -bound) return sign::negative;
+    return detail::double_slow(f, r, v...);
   } else {
     ++filter_stats().evaluations;
     if (filter_config().enabled) [[likely]] {

@@ -11,6 +11,15 @@ using test::Q;
 
 namespace {
 
+/// Plain double for the length of a test: the double kernel's signs
+/// evaluated once in floating point, as any double code would.
+struct plain_double {
+  plain_double() { filter_config().exact_double_signs = false; }
+  ~plain_double() { filter_config().exact_double_signs = true; }
+  plain_double(plain_double const&) = delete;
+  plain_double& operator=(plain_double const&) = delete;
+};
+
 struct counts {
   int compared = 0, double_wrong = 0, filtered_wrong = 0;
 };
@@ -20,6 +29,7 @@ std::array<Q, 3> q3(double a, double b, double c) { return {Q(a), Q(b), Q(c)}; }
 } // namespace
 
 TEST_CASE("E2: points 1 ulp off a line", "[filter][e2]") {
+  plain_double plain;
   // The classic orientation experiment (Kettner et al.): a grid of points
   // ulps away from (0.5, 0.5), against the line through (12, 12) and (24, 24).
   counts c;
@@ -46,6 +56,7 @@ TEST_CASE("E2: points 1 ulp off a line", "[filter][e2]") {
 }
 
 TEST_CASE("E3: points 1 ulp off a plane", "[filter][e3]") {
+  plain_double plain;
   // Points of a plane through three random decimal points, moved up to 2 ulps in z.
   counts c;
   for (int t = 0; t < 400; ++t) {
@@ -78,6 +89,7 @@ TEST_CASE("E3: points 1 ulp off a plane", "[filter][e3]") {
 }
 
 TEST_CASE("S2: the circle through nearly antipodal directions", "[filter][s2]") {
+  plain_double plain;
   counts c;
   for (int t = 0; t < 400; ++t) {
     double ax = test::random_decimal(4, 1).convert_to<double>() + 2, ay = test::random_decimal(4, 1).convert_to<double>(),
@@ -103,6 +115,7 @@ TEST_CASE("S2: the circle through nearly antipodal directions", "[filter][s2]") 
 }
 
 TEST_CASE("S2 and E2: the vertex of nearly coincident circles", "[filter][s2]") {
+  plain_double plain;
   counts c;
   for (int t = 0; t < 400; ++t) {
     std::array<double, 3> n1{test::random_decimal(3, 1).convert_to<double>(), test::random_decimal(3, 1).convert_to<double>(), 1.0};
@@ -183,4 +196,28 @@ TEST_CASE("every exact stage gives the true sign: double, 128-bit and GMP intege
       CHECK(wrong == 0);
     }
   }
+}
+
+TEST_CASE("over double, signs are exact for the doubles given", "[filter][double]") {
+  // The points 1 ulp off the line y = x: plain double gets some wrong; with
+  // exact signs (the default) the double kernel gets every one right, since
+  // these inputs are doubles exactly.
+  int compared = 0, plain_wrong = 0, exact_wrong = 0;
+  for (int i = 0; i < 64; ++i)
+    for (int j = 0; j < 64; ++j) {
+      double px = test::up(0.5, i), py = test::up(0.5, j);
+      Q truth = test::ref_det3(q3(12, 12, 1), q3(24, 24, 1), q3(px, py, 1));
+      sign exact = e2::orientation<double>({12, 12}, {24, 24}, {px, py});
+      sign plain;
+      {
+        plain_double p;
+        plain = e2::orientation<double>({12, 12}, {24, 24}, {px, py});
+      }
+      ++compared;
+      plain_wrong += static_cast<int>(plain) != truth.sign();
+      exact_wrong += static_cast<int>(exact) != truth.sign();
+    }
+  INFO("compared " << compared << ", plain double wrong " << plain_wrong);
+  CHECK(plain_wrong > 0);
+  CHECK(exact_wrong == 0);
 }
