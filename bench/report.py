@@ -308,8 +308,10 @@ def section_ratio(a):
     return ("### Exact against double\n\n"
             "Median exact build time over median double build time at the same scene. "
             f"*Median ratio* is over the sizes whose exact build took at least {a.ms:g} s. "
-            "The double builds use plain floating point and their maps can differ from the "
-            "exact ones (their counts are in `results.json`).\n\n"
+            "The double builds round every object to doubles and keep each sign exact for "
+            "the rounded objects; their maps can differ from the exact ones (slivers where "
+            "exact circles meet in a point; on Random, whose vertices are not doubles, wrong "
+            "maps), and their counts are in `results.json`.\n\n"
             + table(["Family", "Setting", "Largest common n", "Ratio there", "Median ratio",
                      "Range over all n"], rows, ["l", "l", "r", "r", "r", "l"]))
 
