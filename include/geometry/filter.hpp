@@ -273,6 +273,8 @@ template <class F, std::size_t... N>
 template <class F, std::size_t... N>
 [[gnu::noinline]] sign double_slow(F const& f, sfloat r, hvec<double, N> const&... v) {
   if (r.m == 0.0) return sign::zero;
+  // Infinities and NaNs have no exact value: their floating-point sign it is.
+  if (!std::isfinite(r.m)) return sign_of(r.v);
   ++filter_stats().fallbacks;
   auto exact = [](auto const& c) {
     std::array<rational, std::tuple_size_v<std::remove_cvref_t<decltype(c)>>> q;
