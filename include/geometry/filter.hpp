@@ -268,6 +268,23 @@ template <class F, std::size_t... N>
   return integer_sign(f, integer_multiple(v.exact())...);
 }
 
+/// The semi-static stage: `f` in double with its error bound (from the
+/// polynomial's depth, a constant the optimiser folds).
+struct stage_result {
+  bool certain;
+  sign s;
+  sfloat r;
+};
+template <class F, std::size_t... N> stage_result semi_static(F const& f, std::array<sfloat, N> const&... a) {
+  int const depth = f(std::array<depth_counter, N>{}...).d;
+  constexpr double u = std::numeric_limits<double>::epsilon() / 2;
+  sfloat r = f(a...);
+  double bound = (2.0 * depth * u) * r.m;
+  if (r.v > bound) return {true, sign::positive, r};
+  if (r.v < -bound) return {true, sign::negative, r};
+  return {false, sign::zero, r};
+}
+
 /// Over double, once the fast comparison failed: a certain zero, else the
 /// exact sign of the polynomial of the doubles' exact values.
 template <class F, std::size_t... N>
@@ -303,24 +320,13 @@ sign filtered_sign(F&& f, hvec<FT, N> const&... v) {
     // over double a valid map.
     if (!filter_config().exact_double_signs) return sign_of(f(v.exact()...));
     ++filter_stats().evaluations;
-    int const depth = f(std::array<detail::depth_counter, N>{}...).d;
-    constexpr double u = std::numeric_limits<double>::epsilon() / 2;
-    detail::sfloat r = f(detail::to_sfloat(v.exact())...);
-    double bound = (2.0 * depth * u) * r.m;
-    if (r.v > bound) return sign::positive;
-    if (r.v < -bound) return sign::negative;
-    return detail::double_slow(f, r, v...);
+    auto q = detail::semi_static(f, detail::to_sfloat(v.exact())...);
+    return q.certain ? q.s : detail::double_slow(f, q.r, v...);
   } else {
     ++filter_stats().evaluations;
     if (filter_config().enabled) [[likely]] {
-      // A constant the optimiser folds: f on depth counters.
-      int const depth = f(std::array<detail::depth_counter, N>{}...).d;
-      constexpr double u = std::numeric_limits<double>::epsilon() / 2;
-      detail::sfloat r = f(detail::to_sfloat(v.approx())...);
-      double bound = (2.0 * depth * u) * r.m;
-      if (r.v > bound) return sign::positive;
-      if (r.v < -bound) return sign::negative;
-      return detail::filtered_slow(f, r, v...);
+      auto q = detail::semi_static(f, detail::to_sfloat(v.approx())...);
+      return q.certain ? q.s : detail::filtered_slow(f, q.r, v...);
     }
     return detail::filtered_slow(f, detail::sfloat{0.0, std::numeric_limits<double>::quiet_NaN()}, v...);
   }

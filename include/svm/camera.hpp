@@ -227,14 +227,8 @@ public:
     double cx = cam_.width / 2.0, cy = cam_.height / 2.0;
     if (proj_ == projection::perspective) {
       // The frustum: circles through consecutive corner directions, inside positive.
-      std::array<vec3, 4> corner{*direction(0, 0), *direction(cam_.width, 0), *direction(cam_.width, cam_.height),
-                                 *direction(0, cam_.height)};
-      vec3 centre = *direction(cx, cy);
-      for (std::size_t i = 0; i < 4; ++i) {
-        vec3 n = cross3(corner[i], corner[(i + 1) % 4]);
-        if (dot3(n, centre) < 0) n = mul3(n, -1);
-        o.window.push_back(n);
-      }
+      o.window = sides({*direction(0, 0), *direction(cam_.width, 0), *direction(cam_.width, cam_.height), *direction(0, cam_.height)},
+                       *direction(cx, cy));
       return o;
     }
     if (proj_ == projection::equirectangular) {
@@ -249,28 +243,30 @@ public:
     if (theta < std::numbers::pi * 80 / 180) {
       // A square frustum with the image's corner cap inside it.
       double t = std::tan(std::min(theta * 1.05 + 1e-3, std::numbers::pi * 85 / 180));
-      std::array<vec3, 4> corner{world({-t, t, 1}), world({t, t, 1}), world({t, -t, 1}), world({-t, -t, 1})};
-      for (std::size_t i = 0; i < 4; ++i) {
-        vec3 n = cross3(corner[i], corner[(i + 1) % 4]);
-        if (dot3(n, f_) < 0) n = mul3(n, -1);
-        o.window.push_back(n);
-      }
+      o.window = sides({world({-t, t, 1}), world({t, t, 1}), world({t, -t, 1}), world({-t, -t, 1})}, f_);
       return o;
     }
     // Leave out a small square around the direction opposite `forward`,
     // beyond the image (or, for a full 360° fisheye, of side 0.01°).
     double eps = std::max((std::numbers::pi - theta) / 2, std::numbers::pi / 36000);
     double t = std::tan(eps);
-    std::array<vec3, 4> corner{world({-t, t, -1}), world({t, t, -1}), world({t, -t, -1}), world({-t, -t, -1})};
-    for (std::size_t i = 0; i < 4; ++i) {
-      vec3 n = cross3(corner[i], corner[(i + 1) % 4]);
-      if (dot3(n, mul3(f_, -1)) < 0) n = mul3(n, -1);
-      o.exclude.push_back(n);
-    }
+    o.exclude = sides({world({-t, t, -1}), world({t, t, -1}), world({t, -t, -1}), world({-t, -t, -1})}, mul3(f_, -1));
     return o;
   }
 
 private:
+  /// The circles through consecutive corners of a spherical quadrilateral,
+  /// each oriented with `inside` on its positive side.
+  static std::vector<vec3> sides(std::array<vec3, 4> const& corner, vec3 const& inside) {
+    using namespace detail;
+    std::vector<vec3> out;
+    for (std::size_t i = 0; i < 4; ++i) {
+      vec3 n = cross3(corner[i], corner[(i + 1) % 4]);
+      out.push_back(dot3(n, inside) < 0 ? mul3(n, -1) : n);
+    }
+    return out;
+  }
+
   camera cam_;
   projection proj_;
   vec3 f_{}, r_{}, u_{};

@@ -96,6 +96,13 @@ check "scene prints the eye" grep -qE '^[-0-9./]+,[-0-9./]+,[-0-9./]+$' <<<"$eye
 "$genbsp" stats "$work/platforms.off" --eye "$eye" >"$work/p.json"
 check "platforms of 5 slabs: 6 faces" grep -q '"faces":6}' "$work/p.json"
 
+# The furnished room: 1,161 faces with OFF colours, and colours reach the drawing.
+room_eye=$("$genbsp" scene room -o "$work/room.off")
+check "room: 1161 faces" test "$(sed -n 3p "$work/room.off" | cut -d' ' -f2)" = 1161
+check "room: every face has a colour" test "$(awk 'NR > 3 && NF == 8' "$work/room.off" | wc -l)" -eq 1161
+"$genbsp" render "$work/room.off" --eye "$room_eye" --look 330,250,80 --style flat --size 160x120 -o "$work/room.svg"
+check "room: the rug's colour is drawn flat" grep -q 'fill="#a0343a"' "$work/room.svg"
+
 # Errors: one line naming file and line, exit status 2, no output file left behind.
 printf 'OFF\n3 1 0\n0 0 0\n1 0 zero\n0 1 0\n3 0 1 2\n' >"$work/bad.off"
 expect_error "bad number" "bad.off:4:" "$genbsp" stats "$work/bad.off" --eye 0,0,1
