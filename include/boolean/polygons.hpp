@@ -1,0 +1,198 @@
+/// @file
+/// Boolean operations on polygons in the plane, exact: polygons with holes
+/// (simple-features rules) or paths with a fill rule become point-set trees
+/// over `geometry::e2`, trees are merged (`bsp::merge`), and the result is
+/// read back as valid polygons with holes.
+///
+/// Input vertices are exact rationals; no point is ever constructed while the
+/// trees are built and merged, only when the output rings are read off.
+#pragma once
+
+#include "rings.hpp"
+
+#include <bsp/boolean.hpp>
+#include <bsp/point_set.hpp>
+#include <geometry/e2.hpp>
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace boolean {
+
+/// The plane, exact, as the trees see it.
+using plane_kernel = geometry::e2::exact_kernel;
+/// A region of the plane: a point-set tree, `true` inside.
+using region2 = bsp::point_set<plane_kernel, bool>;
+
+/// How the rings of a path set decide which points are inside, from the
+/// winding number `w` of the point (a counter-clockwise ring winds +1 around
+/// the points it encloses): odd `w`, `w ≠ 0`, `w > 0`, `w < 0`.
+enum class fill_rule { evenodd, nonzero, positive, negative };
+
+/// The four Boolean operations (`difference` is the first operand minus the second).
+enum class set_op { union_, intersection, difference, symmetric_difference };
+
+/// Input that does not describe a valid polygon set.
+struct invalid_polygon : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
+
+namespace detail {
+
+/// Removes repeated consecutive vertices (and a repeated first vertex at the end).
+inline ring without_repeats(ring r) {
+  r.erase(std::unique(r.begin(), r.end()), r.end());
+  while (r.size() >= 2 && r.back() == r.front()) r.pop_back();
+  return r;
+}
+
+/// The segments of the ring `r` with the region on its left, as the tree
+/// builder wants them: the region on their negative side.
+inline void add_edges(ring const& r, std::vector<plane_kernel::sub_hyperplane>& out) {
+  for (std::size_t i = 0, n = r.size(); i < n; ++i) out.push_back(geometry::e2::segment(r[(i + 1) % n], r[i]));
+}
+
+/// The winding number of the rings around `p`, which lies on none of them.
+inline long winding(std::vector<ring> const& rings, point2 const& p) {
+  long w = 0;
+  for (auto const& r : rings)
+    for (std::size_t i = 0, n = r.size(); i < n; ++i) {
+      auto const &a = r[i], &b = r[(i + 1) % n];
+      if (a.y() <= p.y()) {
+        if (b.y() > p.y() && geometry::e2::orientation(a, b, p) == geometry::sign::positive) ++w;
+      } else if (b.y() <= p.y() && geometry::e2::orientation(a, b, p) == geometry::sign::negative) {
+        --w;
+      }
+    }
+  return w;
+}
+
+/// A ring of zero signed area is either flat (all its vertices on one line:
+/// no interior, dropped) or a self-intersecting figure whose lobes cancel.
+inline void refuse_flat_figures(ring const& r) {
+  for (std::size_t i = 2; i < r.size(); ++i)
+    if (geometry::e2::orientation(r[0], r[1], r[i]) != geometry::sign::zero)
+      throw invalid_polygon("the polygons are not valid: a ring crosses itself (read it as a path with a fill rule "
+                            "instead)");
+}
+
+inline bool filled(long w, fill_rule rule) {
+  switch (rule) {
+  case fill_rule::evenodd: return w % 2 != 0;
+  case fill_rule::nonzero: return w != 0;
+  case fill_rule::positive: return w > 0;
+  case fill_rule::negative: return w < 0;
+  }
+  return false;
+}
+
+} // namespace detail
+
+/// The region of a set of polygons with holes, read by the simple-features
+/// rules: each polygon is its outer ring's interior minus its holes', and the
+/// set is the union of its polygons.  Ring orientation in the input does not
+/// matter (outer rings are turned counter-clockwise, holes clockwise);
+/// repeated vertices and zero-area rings are dropped.
+///
+/// The input must be valid: rings simple, holes inside their outer ring,
+/// polygons with disjoint interiors; rings may touch at vertices and share
+/// edges.  Validity is checked after the build, exactly: the area enclosed by
+/// the rings must equal the area of the region the tree bounds, which fails
+/// for crossing rings, overlapping polygons and holes outside their outer
+/// ring.  Throws `invalid_polygon` then (read such input with a fill rule).
+inline region2 region(multipolygon const& m) {
+  std::vector<plane_kernel::sub_hyperplane> edges;
+  rational enclosed(0);
+  for (auto const& p : m) {
+    ring outer = detail::without_repeats(p.outer);
+    auto a = twice_signed_area(outer);
+    if (a == 0) { // no interior (then its holes are meaningless), unless it is a figure eight
+      detail::refuse_flat_figures(outer);
+      continue;
+    }
+    if (a < 0) std::reverse(outer.begin(), outer.end());
+    enclosed += abs(a);
+    detail::add_edges(outer, edges);
+    for (auto const& h0 : p.holes) {
+      ring h = detail::without_repeats(h0);
+      auto b = twice_signed_area(h);
+      if (b == 0) {
+        detail::refuse_flat_figures(h);
+        continue;
+      }
+      if (b > 0) std::reverse(h.begin(), h.end());
+      enclosed -= abs(b);
+      detail::add_edges(h, edges);
+    }
+  }
+  auto t = bsp::build_point_set<plane_kernel>(std::move(edges), true, false, bsp::random_order(20261128));
+  auto measured = bsp::measure(t, true);
+  if (!measured || *measured * 2 != enclosed)
+    throw invalid_polygon("the polygons are not valid: rings cross or overlap, or a hole lies outside its outer "
+                          "ring (read them as paths with a fill rule instead)");
+  return t;
+}
+
+/// The region of closed paths under a fill rule, as Clipper reads them:
+/// rings may self-intersect, overlap and run in either direction.  Built
+/// from all edges, each cell of the tree labelled by the rule applied to its
+/// winding number (exact, at a rational point inside the cell; the cost is
+/// the number of cells times the number of edges).
+inline region2 region(std::vector<ring> const& paths, fill_rule rule) {
+  std::vector<ring> rings;
+  std::vector<plane_kernel::sub_hyperplane> edges;
+  for (auto const& p : paths) {
+    ring r = detail::without_repeats(p);
+    if (r.size() < 2) continue;
+    detail::add_edges(r, edges);
+    rings.push_back(std::move(r));
+  }
+  auto t = bsp::build_point_set<plane_kernel>(std::move(edges), true, false, bsp::random_order(20261128));
+  for (auto const& c : bsp::cells(t)) {
+    auto v = geometry::e2::vertices(c.region);
+    bool inside = false;
+    if (v) { // bounded: the centroid of its vertices is inside it, off every edge
+      rational sx(0), sy(0);
+      for (auto const& q : *v) sx += q.x(), sy += q.y();
+      rational n(static_cast<long>(v->size()));
+      inside = detail::filled(detail::winding(rings, point2(rational(sx / n), rational(sy / n))), rule);
+    }
+    t.leaf_data(c.leaf) = inside;
+  }
+  return bsp::reduce(t);
+}
+
+/// `op` applied to the regions `a` and `b`.
+inline region2 apply(set_op op, region2 const& a, region2 const& b) {
+  switch (op) {
+  case set_op::union_: return bsp::set_union(a, b);
+  case set_op::intersection: return bsp::set_intersection(a, b);
+  case set_op::difference: return bsp::set_difference(a, b);
+  case set_op::symmetric_difference: return bsp::set_symmetric_difference(a, b);
+  }
+  throw std::invalid_argument("boolean::apply: unknown operation");
+}
+
+/// The exact area of a region; nothing when it is unbounded.
+inline std::optional<rational> area(region2 const& r) { return bsp::measure(r, true); }
+
+/// The valid polygons with holes of a bounded region (see rings.hpp for the
+/// rules they follow).  Throws `std::invalid_argument` for an unbounded region.
+inline multipolygon polygons(region2 const& r) {
+  std::vector<directed_segment> edges;
+  for (auto& b : bsp::boundary(r)) {
+    // The region on the left: along the piece when it lies on the positive side.
+    auto ends = geometry::e2::endpoints(b.piece);
+    if (!ends) throw std::invalid_argument("boolean::polygons: the region is unbounded");
+    if (b.positive)
+      edges.push_back({ends->first, ends->second});
+    else
+      edges.push_back({ends->second, ends->first});
+  }
+  return assemble(edges);
+}
+
+} // namespace boolean
