@@ -165,8 +165,9 @@ inline region2 region(std::vector<ring> const& paths, fill_rule rule) {
   return bsp::reduce(t);
 }
 
-/// `op` applied to the regions `a` and `b`.
-inline region2 apply(set_op op, region2 const& a, region2 const& b) {
+/// `op` applied to the regions `a` and `b` (of any geometry: the plane, the sphere, space).
+template <bsp::geometry G>
+bsp::point_set<G, bool> apply(set_op op, bsp::point_set<G, bool> const& a, bsp::point_set<G, bool> const& b) {
   switch (op) {
   case set_op::union_: return bsp::set_union(a, b);
   case set_op::intersection: return bsp::set_intersection(a, b);

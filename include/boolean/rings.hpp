@@ -12,6 +12,7 @@
 #pragma once
 
 #include <geometry/e2.hpp>
+#include <geometry/io/planar.hpp>
 
 #include <algorithm>
 #include <cstddef>
@@ -23,19 +24,14 @@
 namespace boolean {
 
 using geometry::rational;
-using point2 = geometry::e2::point<rational>;
-
+/// A point of the plane, exact.
+using point2 = geometry::io::point2;
 /// A closed ring: vertices in order, the last joined to the first (not repeated).
-using ring = std::vector<point2>;
-
+using ring = geometry::io::ring;
 /// A polygon with holes: an outer ring (counter-clockwise) and holes (clockwise).
-struct polygon {
-  ring outer;
-  std::vector<ring> holes;
-};
-
+using polygon = geometry::io::polygon_with_holes;
 /// A set of polygons with pairwise disjoint interiors.
-using multipolygon = std::vector<polygon>;
+using multipolygon = geometry::io::multipolygon;
 
 /// A directed boundary edge with the region on its left.
 struct directed_segment {
@@ -98,7 +94,7 @@ struct point_less {
 struct vec2 {
   rational x, y;
 };
-inline vec2 direction(directed_segment const& e) { return {e.to.x() - e.from.x(), e.to.y() - e.from.y()}; }
+inline vec2 edge_vector(directed_segment const& e) { return {e.to.x() - e.from.x(), e.to.y() - e.from.y()}; }
 inline geometry::sign cross(vec2 const& a, vec2 const& b) { return geometry::sign_of(rational(a.x * b.y - a.y * b.x)); }
 inline geometry::sign dot(vec2 const& a, vec2 const& b) { return geometry::sign_of(rational(a.x * b.x + a.y * b.y)); }
 
@@ -151,35 +147,54 @@ inline location ring_in_ring(ring const& inner, ring const& outer) {
   return location::boundary;
 }
 
-/// Cuts a ring that passes more than once through a vertex into loops that
-/// pass once (a hole touching its outer ring is traced as one ring through
-/// the touching vertex; the simple-features rules want two), drops straight
-/// vertices and appends the loops of three or more vertices to `out`.
-inline void split_loops(ring r, std::vector<ring>& out) {
-  std::map<point2, std::size_t, point_less> at; // vertex → its place on the stack
-  ring stack;
-  auto flush = [&](ring loop) {
-    drop_straight(loop);
-    if (loop.size() >= 3) out.push_back(std::move(loop));
-  };
-  for (std::size_t i = 0; i <= r.size(); ++i) {
-    point2 const& v = r[i % r.size()];
-    auto it = at.find(v);
-    if (it == at.end()) {
-      if (i == r.size()) break;
-      at.emplace(v, stack.size());
-      stack.push_back(v);
-      continue;
+/// Closed walks over the directed edges `from[i] → to[i]`: at a vertex with
+/// several edges leaving, the walk takes the one that `prefer(arriving, a, b)`
+/// puts first.  A walk that passes twice through a vertex is cut there into
+/// loops that pass once each (a hole touching its outer ring is walked as
+/// one ring through the touching vertex; the simple-features rules want
+/// two).  Returns each loop as its edges in order.  Throws
+/// `std::invalid_argument` when the edges do not close up.
+template <class Key, class Less, class Prefer>
+std::vector<std::vector<std::size_t>> trace_loops(std::vector<Key> const& from, std::vector<Key> const& to, Prefer prefer) {
+  std::map<Key, std::vector<std::size_t>, Less> leaving;
+  for (std::size_t i = 0; i < from.size(); ++i) leaving[from[i]].push_back(i);
+  std::vector<bool> used(from.size(), false);
+  std::vector<std::vector<std::size_t>> loops;
+  for (std::size_t start = 0; start < from.size(); ++start) {
+    if (used[start]) continue;
+    std::vector<std::size_t> walk;
+    std::size_t e = start;
+    for (;;) {
+      used[e] = true;
+      walk.push_back(e);
+      auto it = leaving.find(to[e]);
+      if (it == leaving.end()) throw std::invalid_argument("boolean: the boundary does not close");
+      std::size_t best = from.size();
+      for (auto c : it->second) {
+        if (used[c] && c != start) continue;
+        if (best == from.size() || prefer(e, c, best)) best = c;
+      }
+      if (best == from.size()) throw std::invalid_argument("boolean: the boundary does not close");
+      if (best == start) break;
+      e = best;
     }
-    // A loop from the earlier visit of v to here.
-    std::size_t k = it->second;
-    ring loop(stack.begin() + static_cast<std::ptrdiff_t>(k), stack.end());
-    for (std::size_t j = k + 1; j < stack.size(); ++j) at.erase(stack[j]);
-    stack.resize(k + 1);
-    flush(std::move(loop));
-    if (i == r.size()) stack.clear();
+    // Cut at repeated vertices: a stack of edges and where each vertex left it.
+    std::map<Key, std::size_t, Less> at;
+    std::vector<std::size_t> stack;
+    for (auto f : walk) {
+      auto pos = at.find(from[f]);
+      if (pos != at.end()) {
+        std::size_t k = pos->second;
+        for (std::size_t j = k; j < stack.size(); ++j) at.erase(from[stack[j]]);
+        loops.emplace_back(stack.begin() + static_cast<std::ptrdiff_t>(k), stack.end());
+        stack.resize(k);
+      }
+      at.emplace(from[f], stack.size());
+      stack.push_back(f);
+    }
+    if (!stack.empty()) loops.push_back(std::move(stack));
   }
-  if (!stack.empty()) flush(std::move(stack));
+  return loops;
 }
 
 struct box {
@@ -235,39 +250,26 @@ inline multipolygon nest(std::vector<ring> rings) {
 
 /// The polygons bounded by `edges`: the directed boundary edges of a bounded
 /// regular region with the region on their left (at every vertex as many
-/// edges leave as arrive).  At a vertex where the boundary touches itself the
-/// ring turns as far left as it can, so rings touch at vertices but never
-/// cross, and a region pinched at a vertex gives two rings.  Collinear edges
-/// are joined.  Throws `std::invalid_argument` when the edges do not close up.
+/// edges leave as arrive).  At a vertex where the boundary touches itself a
+/// ring turns as far left as it can and is then cut at the vertex, so rings
+/// touch at vertices but never cross or pass twice through a point.
+/// Collinear edges are joined.  Throws `std::invalid_argument` when the
+/// edges do not close up.
 inline multipolygon assemble(std::vector<directed_segment> const& edges) {
-  std::map<point2, std::vector<std::size_t>, detail::point_less> leaving;
-  for (std::size_t i = 0; i < edges.size(); ++i) leaving[edges[i].from].push_back(i);
-  std::vector<bool> used(edges.size(), false);
+  std::vector<point2> from, to;
+  for (auto const& e : edges) from.push_back(e.from), to.push_back(e.to);
+  auto loops = detail::trace_loops<point2, detail::point_less>(from, to, [&](std::size_t in, std::size_t a, std::size_t b) {
+    auto back = detail::edge_vector(edges[in]);
+    back.x = -back.x;
+    back.y = -back.y;
+    return detail::clockwise_before(back, detail::edge_vector(edges[a]), detail::edge_vector(edges[b]));
+  });
   std::vector<ring> rings;
-  for (std::size_t start = 0; start < edges.size(); ++start) {
-    if (used[start]) continue;
+  for (auto const& l : loops) {
     ring r;
-    std::size_t e = start;
-    for (;;) {
-      used[e] = true;
-      r.push_back(edges[e].from);
-      auto it = leaving.find(edges[e].to);
-      if (it == leaving.end()) throw std::invalid_argument("boolean::assemble: the boundary does not close");
-      auto back = detail::direction(edges[e]);
-      back.x = -back.x;
-      back.y = -back.y;
-      std::size_t best = edges.size();
-      for (auto c : it->second) {
-        if (used[c] && c != start) continue;
-        if (best == edges.size() ||
-            detail::clockwise_before(back, detail::direction(edges[c]), detail::direction(edges[best])))
-          best = c;
-      }
-      if (best == edges.size()) throw std::invalid_argument("boolean::assemble: the boundary does not close");
-      if (best == start) break;
-      e = best;
-    }
-    detail::split_loops(std::move(r), rings);
+    for (auto e : l) r.push_back(edges[e].from);
+    detail::drop_straight(r);
+    if (r.size() >= 3) rings.push_back(std::move(r));
   }
   return nest(std::move(rings));
 }

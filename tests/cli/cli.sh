@@ -147,7 +147,70 @@ check "view: no placeholder left" test "$(grep -c 'GENBSP_MAP\*/null' "$work/vie
 check "view: nothing fetched from the network" test "$(grep -cE '(src|href)="https?:' "$work/view.html")" -eq 0
 expect_error "view: not html" "\.html" "$genbsp" view "$work/scene.off" --eye 0,0,0 -o "$work/view.txt"
 
-for sub in map locate stats scene render view; do
+# bool: the plane from WKT and GeoJSON (exact decimals), the sphere from GeoJSON.
+printf 'MULTIPOLYGON (((0 0, 2 0, 2 2, 0 2, 0 0), (0.5 0.5, 0.5 1.5, 1.5 1.5, 1.5 0.5, 0.5 0.5)))\n' >"$work/a.wkt"
+cat >"$work/b.geojson" <<'GEO'
+{"type": "FeatureCollection", "features": [
+  {"type": "Feature", "properties": {"name": "shifted"},
+   "geometry": {"type": "Polygon", "coordinates": [[[1, 0.1], [3, 0.1], [3, 2.1], [1, 2.1], [1, 0.1]]]}}]}
+GEO
+summary_field() { python3 -c 'import json, sys; print(json.loads(sys.stdin.read())[sys.argv[1]])' "$1"; }
+# A: 4 - 1 = 3; B: 4; A ∩ B = [1,2]x[0.1,2] minus [1,1.5]x[0.5,1.5] = 1.9 - 0.5 = 1.4.
+for op_area in union:5.6 intersection:1.4 difference:1.6 xor:4.2; do
+  op=${op_area%%:*} area=${op_area#*:}
+  "$genbsp" bool "$work/a.wkt" "$work/b.geojson" --op "$op" -o "$work/r-$op.wkt" >"$work/summary"
+  check "bool $op: exact area $area" test "$(summary_field area_exact <"$work/summary")" = "$area"
+  check "bool $op: WKT written" grep -q '^MULTIPOLYGON' "$work/r-$op.wkt"
+done
+"$genbsp" bool "$work/a.wkt" "$work/b.geojson" --op union -o "$work/u.geojson" >"$work/summary"
+check "bool union: 1 polygon, 2 rings" test "$(summary_field polygons <"$work/summary") $(summary_field rings <"$work/summary")" = "1 2"
+check "bool union: GeoJSON parses as a MultiPolygon" python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); assert d["type"] == "MultiPolygon" and len(d["coordinates"][0]) == 2' "$work/u.geojson"
+"$genbsp" bool "$work/r-union.wkt" "$work/u.geojson" --op xor -o "$work/none.wkt" >"$work/summary"
+check "bool: written WKT and GeoJSON read back as the same set" test "$(summary_field area_exact <"$work/summary")" = 0
+check "bool: the empty result" grep -q 'MULTIPOLYGON EMPTY' "$work/none.wkt"
+"$genbsp" bool "$work/a.wkt" "$work/b.geojson" --op union -o "$work/u.svg" >/dev/null
+check "bool: SVG parses, one path per polygon" python3 -c 'import sys, xml.dom.minidom as m; assert len(m.parse(sys.argv[1]).getElementsByTagName("path")) == 1' "$work/u.svg"
+printf 'POLYGON ((0 0, 4 4, 4 0, 0 4, 0 0))\n' >"$work/bow.wkt"
+expect_error "bool: a self-crossing ring" "bow.wkt: .*crosses itself" "$genbsp" bool "$work/bow.wkt" "$work/a.wkt" --op union -o "$work/x.wkt"
+"$genbsp" bool "$work/bow.wkt" "$work/bow.wkt" --op union --fill-rule evenodd -o "$work/bow-out.wkt" >"$work/summary"
+check "bool --fill-rule evenodd: the bow tie's two lobes" test "$(summary_field area_exact <"$work/summary") $(summary_field polygons <"$work/summary")" = "8 2"
+"$genbsp" bool "$work/bow.wkt" "$work/bow.wkt" --op union --fill-rule positive -o "$work/bow-out.wkt" >"$work/summary"
+check "bool --fill-rule positive: one lobe" test "$(summary_field area_exact <"$work/summary")" = 4
+printf 'POLYGON ((0 0, 2 0,\n 2 2, 0 x, 0 0))\n' >"$work/bad.wkt"
+expect_error "bool: a bad WKT number" "bad.wkt:2: not a number 'x'" "$genbsp" bool "$work/bad.wkt" "$work/a.wkt" --op union -o "$work/x.wkt"
+printf '{"type": "Polygon",\n "coordinates": [[[0, 0], [1, 0], [0, 0]]]}\n' >"$work/bad.geojson"
+expect_error "bool: a short GeoJSON ring" "bad.geojson:2: a ring needs" "$genbsp" bool "$work/bad.geojson" "$work/a.wkt" --op union -o "$work/x.wkt"
+printf 'POLYGON ((0 0, 1 0, 1 1, 0 0)) extra\n' >"$work/trail.wkt"
+expect_error "bool: text after the geometry" "trail.wkt:1: unexpected" "$genbsp" bool "$work/trail.wkt" "$work/a.wkt" --op union -o "$work/x.wkt"
+expect_error "bool: unknown output format" "\.dxf" "$genbsp" bool "$work/a.wkt" "$work/a.wkt" --op union -o "$work/x.dxf"
+expect_error "bool: bad operation" "try --help" "$genbsp" bool "$work/a.wkt" "$work/a.wkt" --op minus -o "$work/x.wkt"
+check "bool: no file after an error" test ! -e "$work/x.wkt"
+# The sphere: the northern hemisphere (counter-clockwise along the equator) and an octant.
+printf '{"type":"Polygon","coordinates":[[[0,0],[90,0],[180,0],[-90,0],[0,0]]]}\n' >"$work/north.geojson"
+printf '{"type":"Polygon","coordinates":[[[0,0],[90,0],[0,90],[0,0]]]}\n' >"$work/octant.geojson"
+printf '{"type":"Polygon","coordinates":[[[170,-10],[-170,-10],[-170,10],[170,10],[170,-10]]]}\n' >"$work/dateline.geojson"
+sphere_area() { "$genbsp" bool "$@" --geometry s2 -o "$work/s.geojson" | summary_field area; }
+close_to() { python3 -c 'import math, sys; a, b = float(sys.argv[1]), eval(sys.argv[2], {"pi": math.pi}); sys.exit(abs(a - b) > 1e-9 * max(1, abs(b)))' "$1" "$2"; }
+check "bool s2: hemisphere minus octant = 3 pi / 2" close_to "$(sphere_area "$work/north.geojson" "$work/octant.geojson" --op difference)" "1.5 * pi"
+check "bool s2: octant from the south hemisphere's view: nothing shared" close_to "$(sphere_area "$work/octant.geojson" "$work/north.geojson" --op difference)" "0"
+# Independent truth: the square's area as two spherical triangles (Van Oosterom and Strackee).
+square_area=$(python3 -c '
+import math
+def v(lon, lat):
+    lon, lat = math.radians(lon), math.radians(lat)
+    return (math.cos(lat) * math.cos(lon), math.cos(lat) * math.sin(lon), math.sin(lat))
+def tri(a, b, c):
+    dot = lambda p, q: sum(x * y for x, y in zip(p, q))
+    cross = lambda p, q: (p[1] * q[2] - p[2] * q[1], p[2] * q[0] - p[0] * q[2], p[0] * q[1] - p[1] * q[0])
+    return 2 * math.atan2(dot(a, cross(b, c)), 1 + dot(a, b) + dot(b, c) + dot(c, a))
+p = [v(170, -10), v(-170, -10), v(-170, 10), v(170, 10)]
+print(repr(tri(p[0], p[1], p[2]) + tri(p[0], p[2], p[3])))')
+check "bool s2: a square across the antimeridian" close_to "$(sphere_area "$work/dateline.geojson" "$work/dateline.geojson" --op union)" "$square_area"
+"$genbsp" bool "$work/north.geojson" "$work/dateline.geojson" --geometry s2 --op union -o "$work/s.geojson" >"$work/summary"
+check "bool s2: km² on the mean Earth radius" python3 -c 'import json, sys, math; d = json.loads(open(sys.argv[1]).read()); assert abs(d["area_km2"] - d["area"] * 6371.0088 ** 2) < 1e-6 * d["area_km2"]' "$work/summary"
+expect_error "bool s2: no SVG" "SVG output is for --geometry e2" "$genbsp" bool "$work/north.geojson" "$work/octant.geojson" --geometry s2 --op union -o "$work/x.svg"
+
+for sub in map locate stats scene render view bool; do
   "$genbsp" "$sub" --help >"$work/help" 2>&1
   check "$sub --help exits 0" test $? -eq 0
   check "$sub --help says what it does" grep -q "Usage" "$work/help"

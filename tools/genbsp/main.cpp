@@ -1,4 +1,5 @@
-// genbsp: the command-line program.  Subcommands map, locate, stats, render, scene.
+// genbsp: the command-line program.  Subcommands map, locate, stats, render,
+// view, scene (here) and bool, csg (boolean.cpp).
 // Bad input gets one line on stderr (naming file and line where there is
 // one) and exit status 2; output files are written whole or not at all.
 #include <geometry/io/polygons.hpp>
@@ -12,6 +13,8 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "boolean.hpp"
+#include "common.hpp"
 #include "viewer_html.hpp"
 
 #include <sys/resource.h>
@@ -27,13 +30,10 @@
 
 namespace {
 
+using namespace genbsp_tool;
+
 using geometry::rational;
 using json = nlohmann::ordered_json;
-
-/// Bad input: reported as one line, exit status 2.
-struct usage_error : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
 
 /// "X,Y,Z" read exactly.
 geometry::e3::point<rational> parse_point(std::string const& text, std::string const& option) {
@@ -53,32 +53,6 @@ geometry::e3::point<rational> parse_point(std::string const& text, std::string c
   return {c[0], c[1], c[2]};
 }
 
-/// Writes `text` to `path` through a temporary file and a rename, so that the
-/// file is either complete or untouched; "-" is standard output.
-void write_file(std::string const& path, std::string const& text) {
-  if (path == "-") {
-    std::cout << text;
-    return;
-  }
-  std::filesystem::path target(path), tmp = target;
-  tmp += ".tmp" + std::to_string(::getpid());
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    if (!out) throw usage_error(path + ": cannot write");
-    out << text;
-    out.flush();
-    if (!out) {
-      std::filesystem::remove(tmp);
-      throw usage_error(path + ": write failed");
-    }
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, target, ec);
-  if (ec) {
-    std::filesystem::remove(tmp);
-    throw usage_error(path + ": " + ec.message());
-  }
-}
 
 std::size_t peak_bytes() {
   rusage u{};
@@ -210,25 +184,6 @@ template <class FT> json map_json(svm::visibility_map<FT> const& vm, geometry::e
           {"stats", stats_json(vm, l)}};
 }
 
-/// An exact number as text: a decimal when it terminates, else p/q.
-std::string exact_text(rational const& q) {
-  auto den = boost::multiprecision::denominator(q);
-  geometry::integer d(den);
-  int twos = 0, fives = 0;
-  while (d % 2 == 0) d /= 2, ++twos;
-  while (d % 5 == 0) d /= 5, ++fives;
-  if (d != 1) return q.str();
-  int digits = std::max(twos, fives);
-  geometry::integer scale = boost::multiprecision::pow(geometry::integer(10), static_cast<unsigned>(digits));
-  geometry::integer n = geometry::integer(boost::multiprecision::numerator(q)) * (scale / geometry::integer(den));
-  bool neg = n < 0;
-  std::string s = (neg ? geometry::integer(-n) : n).str();
-  if (digits > 0) {
-    if (s.size() <= static_cast<std::size_t>(digits)) s.insert(0, static_cast<std::size_t>(digits) - s.size() + 1, '0');
-    s.insert(s.size() - static_cast<std::size_t>(digits), ".");
-  }
-  return (neg ? "-" : "") + s;
-}
 
 std::string off_text(svm::scenes::scene const& s) {
   std::ostringstream out;
@@ -360,6 +315,9 @@ int run(int argc, char** argv) {
   scene->add_option("--seed", seed, "random seed");
   scene->add_option("-o,--output", scene_out, "output SCENE.off")->required();
 
+  bool_job bj;
+  bj.add_to(app);
+
   try {
     app.parse(argc, argv);
   } catch (CLI::CallForHelp const& e) {
@@ -372,7 +330,9 @@ int run(int argc, char** argv) {
     return 2;
   }
 
-  if (*map) {
+  if (*bj.command) {
+    bj.run();
+  } else if (*map) {
     auto l = load(mj);
     auto eye = parse_point(mj.eye_text, "--eye");
     auto text = with_map(mj, l, [&](auto const& vm) { return map_json(vm, eye, l).dump(1) + "\n"; });
@@ -584,7 +544,7 @@ int run(int argc, char** argv) {
 int main(int argc, char** argv) {
   try {
     return run(argc, argv);
-  } catch (usage_error const& e) {
+  } catch (genbsp_tool::usage_error const& e) {
     std::cerr << "genbsp: " << e.what() << "\n";
     return 2;
   } catch (geometry::io::read_error const& e) {

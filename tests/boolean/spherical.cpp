@@ -1,0 +1,179 @@
+// Boolean operations on spherical polygons: areas against closed forms
+// (octants, lunes, hemispheres, the complement of a small square), polygons
+// across the antimeridian, around a pole and larger than a hemisphere, and
+// the output loops read back into exactly the same region.
+#include "../support.hpp"
+
+#include <boolean/spherical.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <numbers>
+
+using boolean::direction;
+using boolean::loop;
+using boolean::set_op;
+using test::Q;
+
+namespace {
+
+constexpr double pi = std::numbers::pi;
+
+direction d(long x, long y, long z) { return direction(std::array<Q, 3>{Q(x), Q(y), Q(z)}); }
+direction ll(double lon, double lat) { return boolean::from_lonlat(Q(lon), Q(lat)); }
+
+boolean::region_s2 region(std::vector<loop> loops) { return boolean::spherical_region(loops); }
+
+/// The number of inside cells: zero exactly when the region is empty.
+std::size_t inside_cells(boolean::region_s2 const& r) {
+  std::size_t n = 0;
+  for (auto const& c : bsp::cells(r)) n += r.leaf_data(c.leaf);
+  return n;
+}
+
+/// The output polygons of `r`, read back as a region, must be `r` exactly.
+void check_round_trip(boolean::region_s2 const& r) {
+  auto polys = boolean::spherical_polygons(r);
+  boolean::region_s2 back(false);
+  for (auto const& p : polys) {
+    std::vector<loop> loops{p.outer};
+    loops.insert(loops.end(), p.holes.begin(), p.holes.end());
+    // Every output arc is a minor arc: consecutive vertices are independent.
+    for (auto const& l : loops)
+      for (std::size_t i = 0; i < l.size(); ++i) CHECK(geometry::parallel(l[i], l[(i + 1) % l.size()]) == geometry::sign::zero);
+    back = bsp::set_union(back, region(loops));
+  }
+  CHECK(inside_cells(boolean::apply(set_op::symmetric_difference, back, r)) == 0);
+}
+
+/// Independent area of a spherical polygon around a point `c` inside it: the
+/// sum of the triangles (c, v_i, v_i+1) by Van Oosterom and Strackee's formula.
+double fan_area(std::vector<std::array<double, 3>> const& v, std::array<double, 3> const& c) {
+  auto dot = [](auto const& a, auto const& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+  auto cross = [](auto const& a, auto const& b) {
+    return std::array<double, 3>{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+  };
+  double s = 0;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    auto const &a = v[i], &b = v[(i + 1) % v.size()];
+    s += 2 * std::atan2(dot(c, cross(a, b)), 1 + dot(c, a) + dot(a, b) + dot(b, c));
+  }
+  return s;
+}
+
+std::array<double, 3> unit(double lon, double lat) {
+  lon *= pi / 180, lat *= pi / 180;
+  return {std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat)};
+}
+
+} // namespace
+
+TEST_CASE("S2 Boolean operations: octants, lunes and hemispheres have their closed-form areas", "[boolean][s2]") {
+  boolean::region_s2 all(false);
+  for (int sx : {-1, 1})
+    for (int sy : {-1, 1})
+      for (int sz : {-1, 1}) {
+        loop l{d(sx, 0, 0), d(0, sy, 0), d(0, 0, sz)};
+        if (sx * sy * sz < 0) std::reverse(l.begin(), l.end());
+        auto o = region({l});
+        CHECK(boolean::area(o) == Approx(pi / 2).epsilon(1e-14));
+        CHECK(inside_cells(boolean::apply(set_op::intersection, all, o)) == 0); // octants do not overlap
+        all = boolean::apply(set_op::union_, all, o);
+        if (boolean::area(all) < 4 * pi - 1) check_round_trip(all);
+      }
+  CHECK(boolean::area(all) == Approx(4 * pi).epsilon(1e-14));
+  CHECK_THROWS(boolean::spherical_polygons(all)); // the whole sphere has no boundary
+  // Lunes between meridians: area 2 × their angle.
+  for (int deg : {10, 45, 90, 135, 170}) {
+    auto lune = region({{ll(0, 90), ll(0, 0), ll(0, -90), ll(deg, 0)}});
+    CHECK(boolean::area(lune) == Approx(2 * deg * pi / 180).epsilon(1e-13));
+    check_round_trip(lune);
+  }
+  // Hemispheres: the northern one and its complement; a tilted one by its great circle.
+  auto north = region({{ll(0, 0), ll(90, 0), ll(180, 0), ll(-90, 0)}});
+  auto south = region({{ll(-90, 0), ll(180, 0), ll(90, 0), ll(0, 0)}});
+  CHECK(boolean::area(north) == Approx(2 * pi).epsilon(1e-14));
+  CHECK(inside_cells(boolean::apply(set_op::symmetric_difference, south, bsp::complement(north))) == 0);
+  auto tilted = region({{d(1, 0, 1), d(0, 1, 0), d(-1, 0, -1), d(0, -1, 0)}});
+  CHECK(boolean::area(tilted) == Approx(2 * pi).epsilon(1e-14));
+  // Normals (0, 0, 1) and (-1, 0, 1) are 45° apart: the lune between the hemispheres spans 135°.
+  CHECK(boolean::area(boolean::apply(set_op::intersection, north, tilted)) == Approx(1.5 * pi).epsilon(1e-13));
+  for (auto const* r : {&north, &south, &tilted}) check_round_trip(*r);
+}
+
+TEST_CASE("S2 Boolean operations: the complement of a small square, the antimeridian, the poles", "[boolean][s2]") {
+  // A 2° square: its complement is larger than a hemisphere, given by the reversed ring.
+  loop square{ll(-1, -1), ll(1, -1), ll(1, 1), ll(-1, 1)};
+  loop reversed(square.rbegin(), square.rend());
+  auto small = region({square}), big = region({reversed});
+  std::vector<std::array<double, 3>> sv{unit(-1, -1), unit(1, -1), unit(1, 1), unit(-1, 1)};
+  double a = fan_area(sv, {1, 0, 0});
+  CHECK(boolean::area(small) == Approx(a).epsilon(1e-12));
+  CHECK(boolean::area(big) == Approx(4 * pi - a).epsilon(1e-12));
+  CHECK(inside_cells(boolean::apply(set_op::intersection, small, big)) == 0);
+  CHECK(boolean::area(boolean::apply(set_op::union_, small, big)) == Approx(4 * pi).epsilon(1e-14));
+  auto polys = boolean::spherical_polygons(big);
+  REQUIRE(polys.size() == 1);
+  CHECK(polys[0].outer.size() == 4);
+  check_round_trip(big);
+
+  // The same square moved across the antimeridian has the same area, and
+  // overlapping squares on either side of it unite across it.
+  auto across = region({{ll(179, -1), ll(-179, -1), ll(-179, 1), ll(179, 1)}});
+  CHECK(boolean::area(across) == Approx(a).epsilon(1e-12));
+  auto west = region({{ll(178, -1), ll(180, -1), ll(180, 1), ll(178, 1)}});
+  auto east = region({{ll(-180, -1), ll(-178, -1), ll(-178, 1), ll(-180, 1)}});
+  auto both = boolean::apply(set_op::union_, west, east);
+  CHECK(boolean::area(both) == Approx(2 * a).epsilon(1e-12));
+  CHECK(bsp::classify(both, d(-1, 0, 0)) == std::optional<bool>(true)); // (180°, 0°): the shared edge is gone
+  auto bp = boolean::spherical_polygons(both);
+  REQUIRE(bp.size() == 1);
+  CHECK(bp[0].outer.size() == 6); // the edges at ±1° are two great circles each, meeting at 180°
+  check_round_trip(both);
+
+  // A cap around the north pole at latitude 80°, as an octagon, and the same
+  // with a hole around the pole.
+  loop cap, hole;
+  std::vector<std::array<double, 3>> cv;
+  for (int k = 0; k < 8; ++k) cap.push_back(ll(45 * k, 80)), cv.push_back(unit(45 * k, 80));
+  for (int k = 7; k >= 0; --k) hole.push_back(ll(45 * k, 85));
+  auto cr = region({cap});
+  CHECK(boolean::area(cr) == Approx(fan_area(cv, {0, 0, 1})).epsilon(1e-12));
+  CHECK(bsp::classify(cr, d(0, 0, 1)) == std::optional<bool>(true));
+  auto ring = region({cap, hole});
+  CHECK(bsp::classify(ring, d(0, 0, 1)) == std::optional<bool>(false));
+  CHECK(boolean::area(ring) == Approx(boolean::area(cr) - boolean::area(region({loop(hole.rbegin(), hole.rend())}))).epsilon(1e-12));
+  auto rp = boolean::spherical_polygons(ring);
+  REQUIRE(rp.size() == 1);
+  CHECK(rp[0].holes.size() == 1);
+  check_round_trip(ring);
+  // Both poles' caps minus a band: two polygons.
+  loop south_cap;
+  for (int k = 7; k >= 0; --k) south_cap.push_back(ll(45 * k, -80));
+  auto caps = boolean::apply(set_op::union_, cr, region({south_cap}));
+  CHECK(boolean::spherical_polygons(caps).size() == 2);
+  check_round_trip(caps);
+}
+
+TEST_CASE("S2 Boolean operations: inclusion-exclusion on random spherical polygons", "[boolean][s2]") {
+  for (int t = 0; t < 12; ++t) {
+    auto random_loop = [] {
+      double lon = static_cast<double>(test::uniform(-180, 180)), lat = static_cast<double>(test::uniform(-60, 60));
+      int k = static_cast<int>(test::uniform(3, 12));
+      loop l;
+      for (int i = 0; i < k; ++i) {
+        double r = static_cast<double>(test::uniform(5, 40)), t = 2 * pi * i / k;
+        l.push_back(boolean::from_lonlat(Q(std::lround((lon + r * std::cos(t)) * 10), 10), Q(std::lround((lat + r / 2 * std::sin(t)) * 10), 10)));
+      }
+      return l;
+    };
+    auto A = region({random_loop()}), B = region({random_loop()});
+    auto U = boolean::apply(set_op::union_, A, B), I = boolean::apply(set_op::intersection, A, B);
+    CHECK(boolean::area(U) + boolean::area(I) == Approx(boolean::area(A) + boolean::area(B)).epsilon(1e-12));
+    auto X = boolean::apply(set_op::symmetric_difference, A, B);
+    CHECK(boolean::area(X) == Approx(boolean::area(U) - boolean::area(I)).epsilon(1e-12).margin(1e-12));
+    for (auto const* r : {&U, &I, &X})
+      if (inside_cells(*r)) check_round_trip(*r);
+  }
+}

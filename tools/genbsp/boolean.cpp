@@ -1,0 +1,158 @@
+// genbsp bool: Boolean operations on polygons in the plane (WKT, GeoJSON,
+// exact) and on the sphere (GeoJSON longitude/latitude, great-circle edges).
+#include "boolean.hpp"
+#include "common.hpp"
+
+#include <boolean/polygons.hpp>
+#include <boolean/spherical.hpp>
+#include <geometry/io/geojson.hpp>
+#include <geometry/io/wkt.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <filesystem>
+
+namespace genbsp_tool {
+
+namespace {
+
+using json = nlohmann::ordered_json;
+
+boolean::set_op operation(std::string const& op) {
+  if (op == "union") return boolean::set_op::union_;
+  if (op == "intersection") return boolean::set_op::intersection;
+  if (op == "difference") return boolean::set_op::difference;
+  return boolean::set_op::symmetric_difference;
+}
+
+boolean::fill_rule rule(std::string const& r) {
+  if (r == "evenodd") return boolean::fill_rule::evenodd;
+  if (r == "nonzero") return boolean::fill_rule::nonzero;
+  if (r == "positive") return boolean::fill_rule::positive;
+  return boolean::fill_rule::negative;
+}
+
+std::string extension(std::string const& path) {
+  std::string e = std::filesystem::path(path).extension().string();
+  for (auto& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return e;
+}
+
+/// The plane: a region from a file, as polygons with holes or as paths.
+boolean::region2 plane_region(std::string const& file, std::string const& fill) {
+  auto m = geometry::io::read_polygons(file);
+  try {
+    if (fill.empty()) return boolean::region(m);
+    std::vector<boolean::ring> paths;
+    for (auto& p : m) {
+      paths.push_back(std::move(p.outer));
+      for (auto& h : p.holes) paths.push_back(std::move(h));
+    }
+    return boolean::region(paths, rule(fill));
+  } catch (boolean::invalid_polygon const& e) {
+    throw usage_error(file + ": " + e.what());
+  }
+}
+
+boolean::region_s2 sphere_region(std::string const& file) {
+  auto m = geometry::io::read_polygons(file);
+  auto check = [&](boolean::ring const& ring) {
+    for (auto const& v : ring)
+      if (v.y() < -90 || v.y() > 90)
+        throw usage_error(file + ": a latitude is outside [-90, 90] (positions are [longitude, latitude] in degrees)");
+  };
+  for (auto const& p : m) {
+    check(p.outer);
+    for (auto const& h : p.holes) check(h);
+  }
+  try {
+    return boolean::spherical_region(m);
+  } catch (boolean::invalid_polygon const& e) {
+    throw usage_error(file + ": " + e.what());
+  }
+}
+
+json counts(geometry::io::multipolygon const& m) {
+  std::size_t rings = 0, vertices = 0;
+  for (auto const& p : m) {
+    rings += 1 + p.holes.size();
+    vertices += p.outer.size();
+    for (auto const& h : p.holes) vertices += h.size();
+  }
+  return {{"polygons", m.size()}, {"rings", rings}, {"vertices", vertices}};
+}
+
+} // namespace
+
+void bool_job::add_to(CLI::App& app) {
+  command = app.add_subcommand("bool", "Boolean operation on two polygon sets (plane or sphere); prints a JSON summary");
+  command->add_option("A", a, "first operand: WKT or GeoJSON file (POLYGON, MULTIPOLYGON, Feature(Collection) …)")->required();
+  command->add_option("B", b, "second operand, same formats")->required();
+  command->add_option("--op", op, "union, intersection, difference (A minus B) or xor")
+      ->required()
+      ->check(CLI::IsMember({"union", "intersection", "difference", "xor"}));
+  command->add_option("--geometry", geometry, "e2: the plane (default); s2: the sphere, positions are longitude, latitude in degrees and edges great-circle arcs, each ring's region on its left (RFC 7946 orientation)")
+      ->check(CLI::IsMember({"e2", "s2"}));
+  command->add_option("--fill-rule", fill_rule, "e2: read every ring as a closed path (self-intersections allowed) and fill by evenodd, nonzero, positive or negative winding, instead of the polygons-with-holes rules")
+      ->check(CLI::IsMember({"evenodd", "nonzero", "positive", "negative"}));
+  command->add_option("-o,--output", output, "output OUT.wkt, OUT.geojson (or .json) or OUT.svg (plane only), format from the extension; - writes WKT to standard output")
+      ->required();
+}
+
+void bool_job::run() const {
+  auto start = std::chrono::steady_clock::now();
+  std::string ext = output == "-" ? ".wkt" : extension(output);
+  bool geojson = ext == ".geojson" || ext == ".json";
+  if (ext != ".wkt" && !geojson && ext != ".svg")
+    throw usage_error(output + ": unknown output format '" + ext + "' (use .wkt, .geojson or .svg)");
+  json summary;
+  std::string text;
+  if (geometry == "e2") {
+    auto A = plane_region(a, fill_rule), B = plane_region(b, fill_rule);
+    auto r = boolean::apply(operation(op), A, B);
+    auto area = boolean::area(r);
+    if (!area) throw usage_error("the result is unbounded");
+    auto m = boolean::polygons(r);
+    text = ext == ".svg" ? geometry::io::to_svg(m) : geojson ? geometry::io::to_geojson(m) : geometry::io::to_wkt(m);
+    summary = {{"area", area->convert_to<double>()}, {"area_exact", exact_text(*area)}};
+    summary.update(counts(m));
+  } else {
+    if (!fill_rule.empty()) throw usage_error("--fill-rule: only for --geometry e2");
+    if (ext == ".svg") throw usage_error(output + ": SVG output is for --geometry e2 (use .geojson or .wkt)");
+    auto A = sphere_region(a), B = sphere_region(b);
+    auto r = boolean::apply(operation(op), A, B);
+    std::vector<boolean::spherical_polygon> polys;
+    try {
+      polys = boolean::spherical_polygons(r);
+    } catch (std::invalid_argument const& e) {
+      throw usage_error("the result is the whole sphere, which no ring can bound");
+    }
+    geometry::io::multipolygon m;
+    auto lonlat = [](boolean::loop const& l) {
+      boolean::ring out;
+      for (auto const& d : l) {
+        auto [lon, lat] = boolean::to_lonlat(d);
+        out.emplace_back(rational(lon), rational(lat));
+      }
+      return out;
+    };
+    for (auto const& p : polys) {
+      geometry::io::polygon_with_holes q{lonlat(p.outer), {}};
+      for (auto const& h : p.holes) q.holes.push_back(lonlat(h));
+      m.push_back(std::move(q));
+    }
+    text = geojson ? geometry::io::to_geojson(m) : geometry::io::to_wkt(m);
+    double sr = boolean::area(r);
+    summary = {{"area", sr}, {"area_km2", sr * boolean::earth_radius_km * boolean::earth_radius_km}};
+    summary.update(counts(m));
+  }
+  write_file(output, text);
+  summary["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (output == "-")
+    std::cerr << summary.dump() << "\n";
+  else
+    std::cout << summary.dump() << "\n";
+}
+
+} // namespace genbsp_tool
