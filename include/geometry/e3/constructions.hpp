@@ -219,15 +219,21 @@ template <number FT> std::optional<FT> volume(polytope<FT> const& c) {
 /// constant of bounded size, so predicates keep their degree bound).  Nothing
 /// when fewer than one piece in eight would lie wholly on either side.
 template <number FT> struct axis_median_cut {
-  /// `items`: a vector of objects with a member `piece` (a sub-hyperplane).
+  /// `items`: a vector of sub-hyperplanes, or of objects with a member `piece` (a sub-hyperplane).
   template <class Items> std::optional<hyperplane<FT>> operator()(Items const& items) const {
+    auto piece = [](auto const& item) -> sub_hyperplane<FT> const& {
+      if constexpr (requires { item.piece; })
+        return item.piece;
+      else
+        return item;
+    };
     std::size_t n = items.size();
     std::vector<std::array<double, 6>> box(n); // lo x y z, hi x y z
     std::array<double, 3> lo{HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
     for (std::size_t i = 0; i < n; ++i) {
       auto& b = box[i];
       b = {HUGE_VAL, HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
-      for (auto const& x : homogeneous_vertices(items[i].piece)) {
+      for (auto const& x : homogeneous_vertices(piece(items[i]))) {
         double w = to_double(x[3]);
         if (!(w > 0)) return std::nullopt; // unbounded pieces: leave it to autopartition
         for (std::size_t k = 0; k < 3; ++k) {
