@@ -210,7 +210,37 @@ check "bool s2: a square across the antimeridian" close_to "$(sphere_area "$work
 check "bool s2: km² on the mean Earth radius" python3 -c 'import json, sys, math; d = json.loads(open(sys.argv[1]).read()); assert abs(d["area_km2"] - d["area"] * 6371.0088 ** 2) < 1e-6 * d["area_km2"]' "$work/summary"
 expect_error "bool s2: no SVG" "SVG output is for --geometry e2" "$genbsp" bool "$work/north.geojson" "$work/octant.geojson" --geometry s2 --op union -o "$work/x.svg"
 
-for sub in map locate stats scene render view bool; do
+# csg: boxes in OFF with exact decimals; outputs read back by genbsp itself.
+box() { # box X0 Y0 Z0 X1 Y1 Z1: a box with outward faces, in OFF
+  printf 'OFF\n8 6 0\n%s %s %s\n%s %s %s\n%s %s %s\n%s %s %s\n%s %s %s\n%s %s %s\n%s %s %s\n%s %s %s\n' \
+    "$1" "$2" "$3" "$4" "$2" "$3" "$4" "$5" "$3" "$1" "$5" "$3" "$1" "$2" "$6" "$4" "$2" "$6" "$4" "$5" "$6" "$1" "$5" "$6"
+  printf '4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 2 3 7 6\n4 0 4 7 3\n4 1 2 6 5\n'
+}
+box 0 0 0 1 1 1 >"$work/b1.off"
+box 1 0 0 2 1 1 >"$work/b2.off"
+box 0.5 0.5 0.5 1.5 1.5 1.5 >"$work/b3.off"
+box 1 1 0 2 2 1 >"$work/b4.off"
+"$genbsp" csg "$work/b1.off" "$work/b2.off" --op union -o "$work/u.off" >"$work/summary"
+check "csg: boxes sharing a face unite into one box of 6 faces, 8 vertices" test "$(summary_field volume_exact <"$work/summary") $(summary_field faces <"$work/summary") $(summary_field vertices <"$work/summary") $(summary_field closed <"$work/summary")" = "2 6 8 True"
+"$genbsp" csg "$work/b1.off" "$work/b3.off" --op difference -o "$work/d.obj" >"$work/summary"
+check "csg difference: exact volume 7/8, closed" test "$(summary_field volume_exact <"$work/summary") $(summary_field closed <"$work/summary")" = "0.875 True"
+"$genbsp" csg "$work/d.obj" "$work/b3.off" --op union -o "$work/back.stl" >"$work/summary"
+check "csg: the OBJ written reads back (difference + cube = 15/8)" test "$(summary_field volume_exact <"$work/summary")" = 1.875
+"$genbsp" csg "$work/back.stl" "$work/back.stl" --op intersection -o "$work/back2.off" >"$work/summary"
+check "csg: the STL written reads back" test "$(summary_field volume_exact <"$work/summary") $(summary_field closed <"$work/summary")" = "1.875 True"
+"$genbsp" csg "$work/b1.off" "$work/b4.off" --op union -o "$work/edge.off" >"$work/summary"
+check "csg: boxes sharing an edge are reported non-manifold" test "$(summary_field closed <"$work/summary") $(summary_field non_manifold_edges <"$work/summary")" = "False 1"
+head -n 15 "$work/b1.off" | sed 's/^8 6 0$/8 5 0/' >"$work/open.off"
+expect_error "csg: an open mesh" "open.off: open mesh" "$genbsp" csg "$work/open.off" "$work/b1.off" --op union -o "$work/x.off"
+{ head -n 10 "$work/b1.off"; printf '4 0 1 2 3\n4 7 6 5 4\n4 4 5 1 0\n4 6 7 3 2\n4 3 7 4 0\n4 5 6 2 1\n'; } >"$work/inverted.off"
+"$genbsp" csg "$work/inverted.off" "$work/b2.off" --op union -o "$work/inv.off" >"$work/summary" 2>"$work/err"
+check "csg: an inside-out mesh is turned and said so" grep -q "inverted.off: the faces turn clockwise" "$work/err"
+check "csg: ... and used the right way out" test "$(summary_field volume_exact <"$work/summary")" = 2
+expect_error "csg: unknown output format" "\.ply" "$genbsp" csg "$work/b1.off" "$work/b2.off" --op union -o "$work/x.ply"
+expect_error "csg: no xor" "try --help" "$genbsp" csg "$work/b1.off" "$work/b2.off" --op xor -o "$work/x.off"
+check "csg: no file after an error" test ! -e "$work/x.off"
+
+for sub in map locate stats scene render view bool csg; do
   "$genbsp" "$sub" --help >"$work/help" 2>&1
   check "$sub --help exits 0" test $? -eq 0
   check "$sub --help says what it does" grep -q "Usage" "$work/help"

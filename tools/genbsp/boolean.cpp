@@ -1,11 +1,14 @@
 // genbsp bool: Boolean operations on polygons in the plane (WKT, GeoJSON,
-// exact) and on the sphere (GeoJSON longitude/latitude, great-circle edges).
+// exact) and on the sphere (GeoJSON longitude/latitude, great-circle edges);
+// genbsp csg: on closed polyhedra (OFF, OBJ, STL).
 #include "boolean.hpp"
 #include "common.hpp"
 
 #include <boolean/polygons.hpp>
+#include <boolean/polyhedra.hpp>
 #include <boolean/spherical.hpp>
 #include <geometry/io/geojson.hpp>
+#include <geometry/io/scene.hpp>
 #include <geometry/io/wkt.hpp>
 
 #include <nlohmann/json.hpp>
@@ -153,6 +156,54 @@ void bool_job::run() const {
     std::cerr << summary.dump() << "\n";
   else
     std::cout << summary.dump() << "\n";
+}
+
+namespace {
+
+/// A solid from a mesh file; a mesh that is not a closed surface is bad input.
+boolean::solid read_solid(std::string const& file) {
+  auto scene = geometry::io::read_scene(file);
+  try {
+    auto s = boolean::from_scene(scene);
+    if (s.flipped) std::cerr << "genbsp: " << file << ": the faces turn clockwise seen from outside; read inside out\n";
+    return s;
+  } catch (std::invalid_argument const& e) {
+    throw usage_error(file + ": " + e.what());
+  }
+}
+
+} // namespace
+
+void csg_job::add_to(CLI::App& app) {
+  command = app.add_subcommand("csg", "Boolean operation on two closed polyhedra; writes the result's mesh and prints a JSON summary");
+  command->add_option("A", a, "first solid: a closed, consistently oriented OFF, OBJ or STL mesh")->required();
+  command->add_option("B", b, "second solid, same formats")->required();
+  command->add_option("--op", op, "union, intersection or difference (A minus B)")
+      ->required()
+      ->check(CLI::IsMember({"union", "intersection", "difference"}));
+  command->add_option("-o,--output", output, "output OUT.off, OUT.obj or OUT.stl (ASCII; triangulated), format from the extension")
+      ->required();
+}
+
+void csg_job::run() const {
+  auto start = std::chrono::steady_clock::now();
+  std::string ext = extension(output);
+  if (ext != ".off" && ext != ".obj" && ext != ".stl")
+    throw usage_error(output + ": unknown output format '" + ext + "' (use .off, .obj or .stl)");
+  auto A = read_solid(a), B = read_solid(b);
+  auto o = op == "union" ? boolean::csg_op::union_ : op == "intersection" ? boolean::csg_op::intersection : boolean::csg_op::difference;
+  auto r = boolean::apply(o, A, B);
+  auto m = boolean::to_mesh(r);
+  auto edges = boolean::inspect_edges(m);
+  write_file(output, ext == ".off" ? boolean::to_off(m) : ext == ".obj" ? boolean::to_obj(m) : boolean::to_stl(m));
+  json summary = {{"volume", r.volume.convert_to<double>()},
+                  {"volume_exact", exact_text(r.volume)},
+                  {"faces", m.faces.size()},
+                  {"vertices", m.vertices.size()},
+                  {"closed", edges.unmatched == 0 && edges.non_manifold == 0},
+                  {"non_manifold_edges", edges.non_manifold},
+                  {"seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()}};
+  std::cout << summary.dump() << "\n";
 }
 
 } // namespace genbsp_tool

@@ -16,4 +16,12 @@ struct bool_job {
   void run() const;
 };
 
+/// `genbsp csg A B --op … -o OUT.off|obj|stl`.
+struct csg_job {
+  std::string a, b, op = "union", output;
+  CLI::App* command = nullptr;
+  void add_to(CLI::App& app);
+  void run() const;
+};
+
 } // namespace genbsp_tool

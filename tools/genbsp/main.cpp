@@ -317,6 +317,8 @@ int run(int argc, char** argv) {
 
   bool_job bj;
   bj.add_to(app);
+  csg_job cj;
+  cj.add_to(app);
 
   try {
     app.parse(argc, argv);
@@ -332,6 +334,8 @@ int run(int argc, char** argv) {
 
   if (*bj.command) {
     bj.run();
+  } else if (*cj.command) {
+    cj.run();
   } else if (*map) {
     auto l = load(mj);
     auto eye = parse_point(mj.eye_text, "--eye");
