@@ -15,6 +15,8 @@
 #include <geometry/io/planar.hpp>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <cstddef>
 #include <map>
 #include <stdexcept>
@@ -114,22 +116,34 @@ inline bool clockwise_before(vec2 const& r, vec2 const& a, vec2 const& b) {
   return cross(a, b) == geometry::sign::negative;
 }
 
-/// Removes vertices where the ring goes straight on.
+/// Whether the ring goes straight on at `b` (from `a`, on to `c`).
+inline bool straight(point2 const& a, point2 const& b, point2 const& c) {
+  vec2 u{b.x() - a.x(), b.y() - a.y()}, v{c.x() - b.x(), c.y() - b.y()};
+  return cross(u, v) == geometry::sign::zero && dot(u, v) == geometry::sign::positive;
+}
+
+/// Removes vertices where the ring goes straight on, in one pass (a stack),
+/// then across the seam between the last vertex and the first.
 inline void drop_straight(ring& r) {
-  bool changed = true;
-  while (changed && r.size() >= 3) {
+  ring out;
+  out.reserve(r.size());
+  for (auto& v : r) {
+    while (out.size() >= 2 && straight(out[out.size() - 2], out.back(), v)) out.pop_back();
+    out.push_back(std::move(v));
+  }
+  std::size_t first = 0; // vertices dropped at the front
+  for (bool changed = true; changed && out.size() - first >= 3;) {
     changed = false;
-    for (std::size_t i = 0; i < r.size() && r.size() >= 3; ++i) {
-      std::size_t n = r.size();
-      auto const &a = r[(i + n - 1) % n], &b = r[i], &c = r[(i + 1) % n];
-      vec2 u{b.x() - a.x(), b.y() - a.y()}, v{c.x() - b.x(), c.y() - b.y()};
-      if (cross(u, v) == geometry::sign::zero && dot(u, v) == geometry::sign::positive) {
-        r.erase(r.begin() + static_cast<std::ptrdiff_t>(i));
-        changed = true;
-        if (i > 0) --i;
-      }
+    std::size_t n = out.size();
+    if (straight(out[n - 2], out[n - 1], out[first])) {
+      out.pop_back();
+      changed = true;
+    } else if (straight(out[n - 1], out[first], out[first + 1])) {
+      ++first;
+      changed = true;
     }
   }
+  r.assign(std::make_move_iterator(out.begin() + static_cast<std::ptrdiff_t>(first)), std::make_move_iterator(out.end()));
 }
 
 /// A point strictly inside the ring `inner`'s closure or on it, to decide
@@ -197,17 +211,18 @@ std::vector<std::vector<std::size_t>> trace_loops(std::vector<Key> const& from, 
   return loops;
 }
 
+/// The bounding box of a ring in doubles.  Rounding to nearest is monotone,
+/// so exact containment of boxes implies containment of the rounded boxes:
+/// a conservative filter.
 struct box {
-  rational x0, y0, x1, y1;
+  double x0, y0, x1, y1;
   bool contains(box const& b) const { return x0 <= b.x0 && y0 <= b.y0 && b.x1 <= x1 && b.y1 <= y1; }
 };
 inline box bounds(ring const& r) {
-  box b{r[0].x(), r[0].y(), r[0].x(), r[0].y()};
+  box b{HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
   for (auto const& p : r) {
-    if (p.x() < b.x0) b.x0 = p.x();
-    if (p.y() < b.y0) b.y0 = p.y();
-    if (b.x1 < p.x()) b.x1 = p.x();
-    if (b.y1 < p.y()) b.y1 = p.y();
+    double x = p.x().convert_to<double>(), y = p.y().convert_to<double>();
+    b.x0 = std::min(b.x0, x), b.y0 = std::min(b.y0, y), b.x1 = std::max(b.x1, x), b.y1 = std::max(b.y1, y);
   }
   return b;
 }
@@ -216,8 +231,12 @@ inline box bounds(ring const& r) {
 
 /// Groups rings into polygons: counter-clockwise rings are outer rings, and
 /// each clockwise ring becomes a hole of the smallest outer ring containing
-/// it.  Rings must not cross (they may touch at vertices).  Throws
-/// `std::invalid_argument` for a hole that no outer ring contains.
+/// it.  Rings must not cross (they may touch at vertices) and must bound one
+/// region, as the rings of `assemble` do: then every hole lies in some outer
+/// ring, so of the outer rings whose bounding box holds the hole's, the
+/// largest needs no test, and a hole with one candidate (the common case)
+/// costs no exact test at all.  Throws `std::invalid_argument` for a hole
+/// that no outer ring's box holds.
 inline multipolygon nest(std::vector<ring> rings) {
   struct shell {
     rational area;
@@ -237,13 +256,20 @@ inline multipolygon nest(std::vector<ring> rings) {
     }
   }
   std::sort(shells.begin(), shells.end(), [](shell const& a, shell const& b) { return a.area < b.area; });
+  std::vector<std::size_t> candidates;
   for (auto i : holes) {
     auto b = detail::bounds(rings[i]);
-    auto it = std::find_if(shells.begin(), shells.end(), [&](shell const& s) {
-      return s.bounds.contains(b) && detail::ring_in_ring(rings[i], out[s.index].outer) == location::inside;
-    });
-    if (it == shells.end()) throw std::invalid_argument("boolean::nest: a hole lies in no outer ring");
-    out[it->index].holes.push_back(std::move(rings[i]));
+    candidates.clear();
+    for (std::size_t k = 0; k < shells.size(); ++k)
+      if (shells[k].bounds.contains(b)) candidates.push_back(k);
+    if (candidates.empty()) throw std::invalid_argument("boolean::nest: a hole lies in no outer ring");
+    std::size_t chosen = candidates.back();
+    for (std::size_t c = 0; c + 1 < candidates.size(); ++c)
+      if (detail::ring_in_ring(rings[i], out[shells[candidates[c]].index].outer) == location::inside) {
+        chosen = candidates[c];
+        break;
+      }
+    out[shells[chosen].index].holes.push_back(std::move(rings[i]));
   }
   return out;
 }

@@ -13,6 +13,8 @@
 #include "point_set.hpp"
 
 #include <functional>
+#include <tuple>
+#include <vector>
 #include <type_traits>
 
 namespace bsp {
@@ -72,6 +74,70 @@ point_set<G, R> merge(point_set<G, LA> const& a, point_set<G, LB> const& b, Op o
     stack.push_back({w.in_b, pos, std::move(*r.positive), n, +1, std::move(w.la)});
   }
   return reduce(out);
+}
+
+namespace detail {
+
+/// The pieces of `s` with the labels of tree `t` on their negative and
+/// positive sides (where `s` runs along a node's hyperplane both children are
+/// looked at, as in `boundary`).
+template <geometry G, class N, label L>
+void labels_across(tree<G, N, L> const& t, typename G::sub_hyperplane s,
+                   std::vector<std::tuple<typename G::sub_hyperplane, L, L>>& out) {
+  std::vector<std::pair<typename G::sub_hyperplane, L>> below, across;
+  push_down(t, std::move(s), t.root(), -1, below);
+  for (auto& [piece, lneg] : below) {
+    across.clear();
+    push_down(t, std::move(piece), t.root(), +1, across);
+    for (auto& [p, lpos] : across) out.emplace_back(std::move(p), lneg, lpos);
+  }
+}
+
+} // namespace detail
+
+/// The boundary of `op(a, b)` (`op` on labels `bool × bool → bool`) without
+/// building the merged tree: the pieces of the two operands' boundaries,
+/// classified against both trees, where the result's label changes across
+/// them.  `a_boundary` must cover the boundary of `a` (for instance the
+/// pieces `a` was built from) and `b_boundary` that of `b`; pieces along
+/// which the operand's own label does not change are dropped, so two input
+/// pieces meeting back to back (a shared edge inside one operand) vanish.
+/// Where the two boundaries run together, the piece is taken once (from `a`).
+/// Each output piece has the result on its negative side, like
+/// `oriented_boundary`.
+///
+/// Each input piece is pushed down both trees, so the cost grows with the
+/// number of input pieces times the cells they cross, and not with the size
+/// of the merged tree, which can be much larger.
+template <geometry G, class Op>
+std::vector<typename G::sub_hyperplane> merged_boundary(point_set<G, bool> const& a,
+                                                        std::vector<typename G::sub_hyperplane> const& a_boundary,
+                                                        point_set<G, bool> const& b,
+                                                        std::vector<typename G::sub_hyperplane> const& b_boundary, Op op) {
+  using S = typename G::sub_hyperplane;
+  std::vector<S> out;
+  std::vector<std::tuple<S, bool, bool>> first, second;
+  for (int from = 0; from < 2; ++from) {
+    auto const& own = from == 0 ? a : b;
+    auto const& other = from == 0 ? b : a;
+    for (auto const& s : from == 0 ? a_boundary : b_boundary) {
+      first.clear();
+      detail::labels_across(own, s, first);
+      for (auto& [p, own_neg, own_pos] : first) {
+        if (own_neg == own_pos) continue; // not on this operand's boundary
+        second.clear();
+        detail::labels_across(other, std::move(p), second);
+        for (auto& [q, other_neg, other_pos] : second) {
+          if (from == 1 && other_neg != other_pos) continue; // on both boundaries: taken from a
+          bool neg = from == 0 ? op(own_neg, other_neg) : op(other_neg, own_neg);
+          bool pos = from == 0 ? op(own_pos, other_pos) : op(other_pos, own_pos);
+          if (neg == pos) continue;
+          out.push_back(neg ? std::move(q) : G::opposite(q));
+        }
+      }
+    }
+  }
+  return out;
 }
 
 /// @name Set operations on regular sets (`true` inside)

@@ -14,6 +14,20 @@
 
 namespace bsp {
 
+namespace detail {
+
+/// −1 or +1 when the sub-hyperplane `s` lies wholly on that side of `h` (as
+/// `split` would put it), found cheaply by a geometry that offers
+/// `whole_side`; 0 when `split` must decide.
+template <geometry G> int whole_side(typename G::sub_hyperplane const& s, typename G::hyperplane const& h) {
+  if constexpr (requires { G::whole_side(s, h); })
+    return static_cast<int>(G::whole_side(s, h));
+  else
+    return 0;
+}
+
+} // namespace detail
+
 /// A point-set tree over `G` with labels `L` at its leaves.
 template <geometry G, label L = bool> using point_set = tree<G, none, L>;
 
@@ -69,7 +83,11 @@ point_set<G, L> build_point_set(std::vector<typename G::sub_hyperplane> boundary
     bool free = h.has_value();
     if (!free) {
       h = G::supporting(w.pieces[policy.template choose<G>(w.pieces, piece)]);
-      for (auto const& s : w.pieces) {
+      for (auto& s : w.pieces) {
+        if (int side = detail::whole_side<G>(s, *h)) {
+          (side < 0 ? neg : pos).push_back(std::move(s));
+          continue;
+        }
         auto r = G::split(s, *h);
         if (r.negative) neg.push_back(std::move(*r.negative));
         if (r.positive) pos.push_back(std::move(*r.positive));
@@ -173,6 +191,10 @@ void push_down(tree<G, N, L> const& t, typename G::sub_hyperplane s, node_id n, 
     stack.pop_back();
     if (t.is_leaf(m)) {
       out.emplace_back(std::move(piece), t.leaf_data(m));
+      continue;
+    }
+    if (int w = detail::whole_side<G>(piece, t.splitter(m))) {
+      stack.emplace_back(std::move(piece), t.child(m, w));
       continue;
     }
     auto r = G::split(piece, t.splitter(m));

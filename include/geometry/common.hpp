@@ -69,4 +69,37 @@ std::vector<restricted_bound<Hyperplane, FT, M>> mirrored(std::vector<restricted
   return out;
 }
 
+/// Sign of `det(restrict_to(p, k, h), b)` for a 2-coordinate bound `b` on
+/// the 3-coordinate hyperplane `p`, without constructing the restriction: the
+/// same filtered predicate, so asking it allocates nothing in the common case.
+template <number FT>
+sign restricted_det_sign(hvec<FT, 3> const& p, std::size_t k, hvec<FT, 3> const& h, hvec<FT, 2> const& b) {
+  std::size_t i0 = k == 0 ? 1 : 0, i1 = k == 2 ? 1 : 2;
+  bool flip = detail::restriction_flips(p, k);
+  sign s = filtered_sign(
+      [k, i0, i1, flip](auto const& P, auto const& H, auto const& B) {
+        auto v0 = P[k] * H[i0] - H[k] * P[i0];
+        auto v1 = P[k] * H[i1] - H[k] * P[i1];
+        return flip ? -(v0 * B[1]) - v1 * B[0] : v0 * B[1] - v1 * B[0];
+      },
+      p, h, b);
+  return sign_of(p[k]) == sign::negative ? -s : s;
+}
+
+/// The side of `h` on which an arc of the circle `support` bounded by
+/// `bounds` (two of them: a bounded arc or segment) lies wholly, touching
+/// allowed, as `split` would put it; `on` when it may cross `h`, lie in it, or
+/// is not bounded by two bounds (then `split` decides).  Constructs nothing.
+template <number FT, class Bound>
+oriented_side whole_side(hvec<FT, 3> const& support, std::size_t axis, std::vector<Bound> const& bounds,
+                         hvec<FT, 3> const& h) {
+  if (bounds.size() != 2) return oriented_side::on;
+  sign s = restricted_det_sign(support, axis, h, bounds[0].line());  // side of the start point
+  sign e = -restricted_det_sign(support, axis, h, bounds[1].line()); // side of the end point
+  if (s == sign::zero && e == sign::zero) return oriented_side::on;
+  if (s != sign::negative && e != sign::negative) return oriented_side::positive;
+  if (s != sign::positive && e != sign::positive) return oriented_side::negative;
+  return oriented_side::on;
+}
+
 } // namespace geometry

@@ -42,17 +42,17 @@ std::string extension(std::string const& path) {
   return e;
 }
 
-/// The plane: a region from a file, as polygons with holes or as paths.
-boolean::region2 plane_region(std::string const& file, std::string const& fill) {
+/// The plane: an operand from a file, as polygons with holes or as paths.
+boolean::operand plane_operand(std::string const& file, std::string const& fill) {
   auto m = geometry::io::read_polygons(file);
   try {
-    if (fill.empty()) return boolean::region(m);
+    if (fill.empty()) return boolean::operand_of(m);
     std::vector<boolean::ring> paths;
     for (auto& p : m) {
       paths.push_back(std::move(p.outer));
       for (auto& h : p.holes) paths.push_back(std::move(h));
     }
-    return boolean::region(paths, rule(fill));
+    return boolean::operand_of(paths, rule(fill));
   } catch (boolean::invalid_polygon const& e) {
     throw usage_error(file + ": " + e.what());
   }
@@ -112,13 +112,11 @@ void bool_job::run() const {
   json summary;
   std::string text;
   if (geometry == "e2") {
-    auto A = plane_region(a, fill_rule), B = plane_region(b, fill_rule);
-    auto r = boolean::apply(operation(op), A, B);
-    auto area = boolean::area(r);
-    if (!area) throw usage_error("the result is unbounded");
-    auto m = boolean::polygons(r);
+    auto A = plane_operand(a, fill_rule), B = plane_operand(b, fill_rule);
+    auto m = boolean::combine(operation(op), A, B);
+    auto area = boolean::area(m);
     text = ext == ".svg" ? geometry::io::to_svg(m) : geojson ? geometry::io::to_geojson(m) : geometry::io::to_wkt(m);
-    summary = {{"area", area->convert_to<double>()}, {"area_exact", exact_text(*area)}};
+    summary = {{"area", area.convert_to<double>()}, {"area_exact", exact_text(area)}};
     summary.update(counts(m));
   } else {
     if (!fill_rule.empty()) throw usage_error("--fill-rule: only for --geometry e2");
