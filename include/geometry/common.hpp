@@ -86,6 +86,51 @@ sign restricted_det_sign(hvec<FT, 3> const& p, std::size_t k, hvec<FT, 3> const&
   return sign_of(p[k]) == sign::negative ? -s : s;
 }
 
+/// Sign of `det(a, b, restrict_to(p, k, h))` for bounds `a`, `b` (3
+/// coordinates) on the 4-coordinate hyperplane `p`: the side of `h` of the
+/// polygon vertex `a × b`, as `split` sees it, without constructing the
+/// restriction.
+template <number FT>
+sign restricted_det_sign(hvec<FT, 4> const& p, std::size_t k, hvec<FT, 4> const& h, hvec<FT, 3> const& a,
+                         hvec<FT, 3> const& b) {
+  std::array<std::size_t, 3> idx{};
+  for (std::size_t i = 0, j = 0; i < 4; ++i)
+    if (i != k) idx[j++] = i;
+  bool flip = detail::restriction_flips(p, k);
+  sign s = filtered_sign(
+      [k, idx, flip](auto const& P, auto const& H, auto const& A, auto const& B) {
+        auto r0 = P[k] * H[idx[0]] - H[k] * P[idx[0]];
+        auto r1 = P[k] * H[idx[1]] - H[k] * P[idx[1]];
+        auto r2 = P[k] * H[idx[2]] - H[k] * P[idx[2]];
+        auto c0 = A[1] * B[2] - A[2] * B[1];
+        auto c1 = A[2] * B[0] - A[0] * B[2];
+        auto c2 = A[0] * B[1] - A[1] * B[0];
+        return flip ? c1 * r1 + c2 * r2 - c0 * r0 : c0 * r0 + c1 * r1 + c2 * r2;
+      },
+      p, h, a, b);
+  return sign_of(p[k]) == sign::negative ? -s : s;
+}
+
+/// The side of `h` on which a convex polygon of the plane `support`, bounded
+/// by `bounds` (three or more), lies wholly, touching allowed, as `split`
+/// would put it; `on` when it may cross `h` or lie in it (then `split`
+/// decides).  Constructs nothing.
+template <number FT, class Bound>
+oriented_side whole_side(hvec<FT, 4> const& support, std::size_t axis, std::vector<Bound> const& bounds,
+                         hvec<FT, 4> const& h) {
+  std::size_t n = bounds.size();
+  if (n < 3) return oriented_side::on;
+  bool pos = false, neg = false;
+  for (std::size_t i = 0; i < n && !(pos && neg); ++i) {
+    sign s = restricted_det_sign(support, axis, h, bounds[i].line(), bounds[(i + 1) % n].line());
+    pos = pos || s == sign::positive;
+    neg = neg || s == sign::negative;
+  }
+  if (pos && !neg) return oriented_side::positive;
+  if (neg && !pos) return oriented_side::negative;
+  return oriented_side::on;
+}
+
 /// The side of `h` on which an arc of the circle `support` bounded by
 /// `bounds` (two of them: a bounded arc or segment) lies wholly, touching
 /// allowed, as `split` would put it; `on` when it may cross `h`, lie in it, or

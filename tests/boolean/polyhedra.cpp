@@ -212,7 +212,17 @@ long components(mesh const& m) {
   return n;
 }
 
-solid op(csg_op o, solid const& a, solid const& b) { return boolean::apply(o, a, b); }
+/// `apply`, with the fast path checked against it: `combine` (no merged
+/// tree) gives the same mesh as the merged tree's boundary.
+solid op(csg_op o, solid const& a, solid const& b) {
+  auto r = boolean::apply(o, a, b);
+  auto fast = boolean::combine(o, a, b), slow = boolean::to_mesh(r.tree);
+  CHECK(fast.faces.size() == slow.faces.size());
+  CHECK(fast.vertices.size() == slow.vertices.size());
+  CHECK(boolean::volume(fast) == r.volume);
+  CHECK(boolean::closed(fast) == boolean::closed(slow));
+  return r;
+}
 
 } // namespace
 

@@ -190,12 +190,12 @@ void csg_job::run() const {
     throw usage_error(output + ": unknown output format '" + ext + "' (use .off, .obj or .stl)");
   auto A = read_solid(a), B = read_solid(b);
   auto o = op == "union" ? boolean::csg_op::union_ : op == "intersection" ? boolean::csg_op::intersection : boolean::csg_op::difference;
-  auto r = boolean::apply(o, A, B);
-  auto m = boolean::to_mesh(r);
+  auto m = boolean::combine(o, A, B);
+  auto volume = boolean::volume(m);
   auto edges = boolean::inspect_edges(m);
   write_file(output, ext == ".off" ? boolean::to_off(m) : ext == ".obj" ? boolean::to_obj(m) : boolean::to_stl(m));
-  json summary = {{"volume", r.volume.convert_to<double>()},
-                  {"volume_exact", exact_text(r.volume)},
+  json summary = {{"volume", volume.convert_to<double>()},
+                  {"volume_exact", exact_text(volume)},
                   {"faces", m.faces.size()},
                   {"vertices", m.vertices.size()},
                   {"closed", edges.unmatched == 0 && edges.non_manifold == 0},

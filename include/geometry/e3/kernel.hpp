@@ -24,6 +24,10 @@ template <number FT> struct kernel {
   static hyperplane const& supporting(sub_hyperplane const& s) { return s.support; }
   static split_result<polytope> split(polytope const& c, hyperplane const& h) { return e3::split(c, h); }
   static split_result<sub_hyperplane> split(sub_hyperplane const& s, hyperplane const& h) { return e3::split(s, h); }
+  /// The side of `h` on which `s` lies wholly (`on`: ask `split`), cheaply.
+  static oriented_side whole_side(sub_hyperplane const& s, hyperplane const& h) {
+    return geometry::whole_side(s.support.n, s.axis, s.bounds, h.n);
+  }
   /// The volume of a cell (exact; nothing when unbounded).
   static auto measure(polytope const& c) { return e3::volume(c); }
 };
