@@ -236,6 +236,8 @@ expect_error "csg: an open mesh" "open.off: open mesh" "$genbsp" csg "$work/open
 "$genbsp" csg "$work/inverted.off" "$work/b2.off" --op union -o "$work/inv.off" >"$work/summary" 2>"$work/err"
 check "csg: an inside-out mesh is turned and said so" grep -q "inverted.off: the faces turn clockwise" "$work/err"
 check "csg: ... and used the right way out" test "$(summary_field volume_exact <"$work/summary")" = 2
+"$genbsp" csg "$work/b1.off" "$work/b3.off" --op union --progress -o "$work/p.off" >/dev/null 2>"$work/err"
+check "csg --progress: the stages on standard error" test "$(grep -c '^genbsp: ' "$work/err")" -eq 4
 expect_error "csg: unknown output format" "\.ply" "$genbsp" csg "$work/b1.off" "$work/b2.off" --op union -o "$work/x.ply"
 expect_error "csg: no xor" "try --help" "$genbsp" csg "$work/b1.off" "$work/b2.off" --op xor -o "$work/x.off"
 check "csg: no file after an error" test ! -e "$work/x.off"

@@ -13,7 +13,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include <unistd.h>
+
 #include <chrono>
+#include <cstdio>
 #include <filesystem>
 
 namespace genbsp_tool {
@@ -21,6 +24,32 @@ namespace genbsp_tool {
 namespace {
 
 using json = nlohmann::ordered_json;
+
+/// Stages of a long run on standard error: on a terminal one updated line
+/// once the run has taken a second; with --progress elsewhere, a line each.
+class stages {
+public:
+  explicit stages(bool asked) : tty_(::isatty(2) != 0), on_(tty_ || asked) {}
+  ~stages() {
+    if (shown_ && tty_) std::fprintf(stderr, "\n");
+  }
+  void operator()(std::string const& what) {
+    if (!on_) return;
+    double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    if (tty_) {
+      if (t < 1 && !shown_) return;
+      std::fprintf(stderr, "\rgenbsp: %-60s (%.1f s)", what.c_str(), t);
+    } else {
+      std::fprintf(stderr, "genbsp: %s (%.1f s)\n", what.c_str(), t);
+    }
+    shown_ = true;
+    std::fflush(stderr);
+  }
+
+private:
+  bool tty_, on_, shown_ = false;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
 
 boolean::set_op operation(std::string const& op) {
   if (op == "union") return boolean::set_op::union_;
@@ -101,6 +130,7 @@ void bool_job::add_to(CLI::App& app) {
       ->check(CLI::IsMember({"evenodd", "nonzero", "positive", "negative"}));
   command->add_option("-o,--output", output, "output OUT.wkt, OUT.geojson (or .json) or OUT.svg (plane only), format from the extension; - writes WKT to standard output")
       ->required();
+  command->add_flag("--progress", progress, "report the stages on standard error (always on a terminal, after a second)");
 }
 
 void bool_job::run() const {
@@ -112,8 +142,14 @@ void bool_job::run() const {
   json summary;
   std::string text;
   if (geometry == "e2") {
-    auto A = plane_operand(a, fill_rule), B = plane_operand(b, fill_rule);
+    stages say(progress);
+    say("reading and building " + a);
+    auto A = plane_operand(a, fill_rule);
+    say("reading and building " + b);
+    auto B = plane_operand(b, fill_rule);
+    say(op + " of the boundaries");
     auto m = boolean::combine(operation(op), A, B);
+    say("writing " + output);
     auto area = boolean::area(m);
     text = ext == ".svg" ? geometry::io::to_svg(m) : geojson ? geometry::io::to_geojson(m) : geometry::io::to_wkt(m);
     summary = {{"area", area.convert_to<double>()}, {"area_exact", exact_text(area)}};
@@ -181,6 +217,7 @@ void csg_job::add_to(CLI::App& app) {
       ->check(CLI::IsMember({"union", "intersection", "difference"}));
   command->add_option("-o,--output", output, "output OUT.off, OUT.obj or OUT.stl (ASCII; triangulated), format from the extension")
       ->required();
+  command->add_flag("--progress", progress, "report the stages on standard error (always on a terminal, after a second)");
 }
 
 void csg_job::run() const {
@@ -188,9 +225,15 @@ void csg_job::run() const {
   std::string ext = extension(output);
   if (ext != ".off" && ext != ".obj" && ext != ".stl")
     throw usage_error(output + ": unknown output format '" + ext + "' (use .off, .obj or .stl)");
-  auto A = read_solid(a), B = read_solid(b);
+  stages say(progress);
+  say("reading and checking " + a);
+  auto A = read_solid(a);
+  say("reading and checking " + b);
+  auto B = read_solid(b);
   auto o = op == "union" ? boolean::csg_op::union_ : op == "intersection" ? boolean::csg_op::intersection : boolean::csg_op::difference;
+  say(op + " of the faces");
   auto m = boolean::combine(o, A, B);
+  say("writing " + output);
   auto volume = boolean::volume(m);
   auto edges = boolean::inspect_edges(m);
   write_file(output, ext == ".off" ? boolean::to_off(m) : ext == ".obj" ? boolean::to_obj(m) : boolean::to_stl(m));
