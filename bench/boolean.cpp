@@ -1,0 +1,902 @@
+// Exact Boolean operations in the plane (boolean::operand_of, combine)
+// against Boost.Geometry's union_ and intersection in double precision, on the
+// same inputs:
+//   star         two random star-shaped polygons of n vertices each, integer
+//                coordinates, radii uniform in [0.3R, R], different centres
+//                and seeds, heavily overlapping: long thin spikes whose
+//                boundaries cross thousands of times from n = 1000 on;
+//   star-narrow  the same with radii in [0.9R, R]: far fewer crossings;
+//   grid         K×K unit squares at (2i, 2j) against the same grid shifted
+//                by (1/2, 1/2): every square overlaps exactly one square of
+//                the copy.
+//
+// The genbsp time of a case is the whole job from exact input rings to valid
+// output rings: operand_of(A) + operand_of(B) (build), the boundaries
+// classified against both trees (classify) and the rings assembled (output).
+// The Boost.Geometry time is that of bg::union_ or
+// bg::intersection alone, on multi-polygons converted to double and passed
+// through bg::correct beforehand.  Destroying the results is not timed.
+//
+// Each library runs each case in a child process, so that a run that exceeds
+// the time limit can be stopped and recorded as not finished (both libraries
+// grow faster than linearly on some of these inputs).  Progress goes to
+// stderr, the table to stdout, the results to JSON and CSV (rewritten after
+// every case, so an interrupted run keeps what it measured).
+#include <boolean/polygons.hpp>
+
+// Boost 1.74's Geometry includes one of Boost's own deprecated headers, which
+// would print a message at every build.
+#define BOOST_ALLOW_DEPRECATED_HEADERS
+#include <boost/geometry.hpp>
+#include <boost/geometry/geometries/multi_polygon.hpp>
+#include <boost/geometry/geometries/point_xy.hpp>
+#include <boost/geometry/geometries/polygon.hpp>
+#include <boost/version.hpp>
+
+#include <gmp.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <ctime>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <optional>
+#include <random>
+#include <sstream>
+#include <string>
+#include <string_view>
+#include <system_error>
+#include <thread>
+#include <vector>
+
+namespace {
+
+namespace bg = boost::geometry;
+using boolean::multipolygon;
+using boolean::ring;
+using boolean::set_op;
+using geometry::rational;
+using P = boolean::point2;
+using clock_type = std::chrono::steady_clock;
+
+using bpoint = bg::model::d2::point_xy<double>;
+using bpolygon = bg::model::polygon<bpoint>; // clockwise outer rings, closed (Boost's defaults)
+using bmulti = bg::model::multi_polygon<bpolygon>;
+
+double seconds_since(clock_type::time_point t0) {
+  return std::chrono::duration<double>(clock_type::now() - t0).count();
+}
+
+// ---------------------------------------------------------------------------
+// Command line
+
+struct options {
+  bool quick = false;
+  std::optional<std::string> json, csv;
+  std::uint64_t seed = 20261129;
+  std::vector<std::size_t> stars{100, 1000, 10000, 100000};
+  std::vector<std::size_t> narrow_stars{100, 1000, 10000, 100000};
+  std::vector<std::size_t> grids{10, 30, 100};
+  bool genbsp = true, boost = true;        ///< the libraries to run
+  bool union_ = true, intersection = true; ///< the operations to run
+  /// Seconds one run may take before it is stopped.  With the default sizes
+  /// four runs per library reach it, which keeps the whole run near 9 minutes.
+  double limit = 45;
+  double long_run = 10;     ///< a run at least this long is not repeated
+  int repetitions = 3;      ///< runs per case at least (unless long); the median is reported
+  int max_repetitions = 15; ///< runs per case at most, for short cases
+  double min_total = 0.25;  ///< short cases are repeated until their runs add up to this
+};
+
+void print_help() {
+  std::puts("Usage: bench_boolean [--quick] [--json FILE] [--csv FILE] [--seed N] [--limit S]\n"
+            "                     [--stars N,...] [--narrow-stars N,...] [--grids K,...]\n"
+            "                     [--libraries genbsp,boost] [--operations union,intersection]\n"
+            "\n"
+            "Times genbsp's exact Boolean operations in the plane (operand_of each operand,\n"
+            "combine) against Boost.Geometry's union_ and intersection in double on\n"
+            "the same input: two random star polygons of n vertices each (radii uniform\n"
+            "in [0.3R, R]; narrow stars: in [0.9R, R]), and a K x K grid of unit squares\n"
+            "at (2i, 2j) against its copy shifted by (1/2, 1/2).  Reports the median time\n"
+            "of 3 runs (more for cases under 0.25 s, one for cases over 10 s), the output\n"
+            "size (polygons, rings, vertices), the area (exact for genbsp), the time\n"
+            "ratio genbsp / Boost and the relative area difference.\n"
+            "Each library runs each case in a child process, stopped after the limit.\n"
+            "\n"
+            "  --quick          stars of 100 and 1000 vertices, grids 10 and 30, limit 10 s\n"
+            "  --json FILE      write the results as JSON to FILE\n"
+            "  --csv FILE       write the results as CSV to FILE\n"
+            "  --seed N         seed of the star polygons (default 20261129)\n"
+            "  --limit S        stop a run after S seconds: not finished (default 45); larger\n"
+            "                   sizes of the same library, family and operation are then skipped\n"
+            "  --stars LIST     star sizes, vertices per polygon (default 100,1000,10000,100000);\n"
+            "                   0 for none (also in the next two)\n"
+            "  --narrow-stars LIST  narrow star sizes (default 100,1000,10000,100000)\n"
+            "  --grids LIST     grid sides K (default 10,30,100)\n"
+            "  --libraries L    genbsp, boost or both (default genbsp,boost); for profiling\n"
+            "  --operations L   union, intersection or both (default union,intersection)\n"
+            "  --help           this text");
+}
+
+std::optional<std::vector<std::size_t>> parse_list(std::string_view v) {
+  std::vector<std::size_t> out;
+  std::string s(v);
+  std::size_t pos = 0;
+  while (pos <= s.size()) {
+    std::size_t comma = s.find(',', pos);
+    if (comma == std::string::npos) comma = s.size();
+    std::string item = s.substr(pos, comma - pos);
+    char* end = nullptr;
+    unsigned long long n = std::strtoull(item.c_str(), &end, 10);
+    if (item.empty() || item.front() == '-' || *end != '\0') return std::nullopt;
+    if (n > 0) out.push_back(static_cast<std::size_t>(n));
+    pos = comma + 1;
+  }
+  return out;
+}
+
+/// Parses the command line; returns the exit code to stop with, if any.
+std::optional<int> parse_options(int argc, char** argv, options& o) {
+  bool stars_given = false, narrow_given = false, grids_given = false, limit_given = false;
+  for (int i = 1; i < argc; ++i) {
+    std::string_view a = argv[i];
+    if (a == "--help" || a == "-h") {
+      print_help();
+      return 0;
+    }
+    if (a == "--quick") {
+      o.quick = true;
+      continue;
+    }
+    if (a != "--json" && a != "--csv" && a != "--seed" && a != "--limit" && a != "--stars" && a != "--narrow-stars" &&
+        a != "--grids" && a != "--libraries" && a != "--operations") {
+      std::fprintf(stderr, "bench_boolean: unknown argument '%s' (try --help)\n", argv[i]);
+      return 2;
+    }
+    if (i + 1 >= argc) {
+      std::fprintf(stderr, "bench_boolean: %s needs an argument (try --help)\n", argv[i]);
+      return 2;
+    }
+    std::string_view v = argv[++i];
+    auto bad = [&](char const* what) {
+      std::fprintf(stderr, "bench_boolean: %s needs %s, not '%s'\n", argv[i - 1], what, argv[i]);
+      return 2;
+    };
+    if (a == "--json") {
+      o.json = std::string(v);
+    } else if (a == "--csv") {
+      o.csv = std::string(v);
+    } else if (a == "--seed") {
+      char* end = nullptr;
+      unsigned long long n = std::strtoull(argv[i], &end, 10);
+      if (v.empty() || v.front() == '-' || *end != '\0') return bad("a non-negative integer");
+      o.seed = n;
+    } else if (a == "--limit") {
+      char* end = nullptr;
+      double s = std::strtod(argv[i], &end);
+      if (v.empty() || *end != '\0' || !(s > 0)) return bad("a positive number of seconds");
+      o.limit = s;
+      limit_given = true;
+    } else if (a == "--libraries" || a == "--operations") {
+      bool lib = a == "--libraries";
+      bool& first = lib ? o.genbsp : o.union_;
+      bool& second = lib ? o.boost : o.intersection;
+      first = second = false;
+      std::string list(v);
+      for (std::size_t pos = 0; pos <= list.size();) {
+        std::size_t comma = std::min(list.find(',', pos), list.size());
+        std::string item = list.substr(pos, comma - pos);
+        if (item == (lib ? "genbsp" : "union"))
+          first = true;
+        else if (item == (lib ? "boost" : "intersection"))
+          second = true;
+        else
+          return bad(lib ? "genbsp, boost or genbsp,boost" : "union, intersection or union,intersection");
+        pos = comma + 1;
+      }
+    } else {
+      auto l = parse_list(v);
+      if (!l) return bad("a comma-separated list of non-negative integers");
+      (a == "--stars" ? o.stars : a == "--grids" ? o.grids : o.narrow_stars) = *l;
+      (a == "--stars" ? stars_given : a == "--grids" ? grids_given : narrow_given) = true;
+    }
+  }
+  if (o.quick) {
+    if (!stars_given) o.stars = {100, 1000};
+    if (!narrow_given) o.narrow_stars = {100, 1000};
+    if (!grids_given) o.grids = {10, 30};
+    if (!limit_given) o.limit = 10;
+  }
+  return std::nullopt;
+}
+
+// ---------------------------------------------------------------------------
+// Input
+
+/// A star-shaped ring of about `n` vertices around (cx, cy), counter-clockwise,
+/// integer coordinates: vertex i at angle 2π(i + 0.1 + 0.8u)/n and radius
+/// R(f + (1 − f)u') (u, u' uniform in [0, 1)), rounded.  A vertex that rounding
+/// would put on or behind the ray of its predecessor (seen from the centre) is
+/// dropped, so the ring stays strictly star-shaped around the centre, hence
+/// simple; with R = 10^6 and n ≤ 10^5 that does not happen.
+ring random_star(std::mt19937_64& rng, std::size_t n, std::int64_t cx, std::int64_t cy, double radius, double f) {
+  std::uniform_real_distribution<double> u(0, 1);
+  struct ipoint {
+    std::int64_t x, y;
+  };
+  std::vector<ipoint> v;
+  v.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    double t = 2 * std::numbers::pi * (static_cast<double>(i) + 0.1 + 0.8 * u(rng)) / static_cast<double>(n);
+    double r = radius * (f + (1 - f) * u(rng));
+    v.push_back({cx + std::llround(r * std::cos(t)), cy + std::llround(r * std::sin(t))});
+  }
+  // Cross product of consecutive vertices seen from the centre (|coordinates| ≤ 2·10^6: no overflow).
+  auto turns_left = [&](ipoint const& a, ipoint const& b) {
+    return (a.x - cx) * (b.y - cy) - (a.y - cy) * (b.x - cx) > 0;
+  };
+  std::vector<ipoint> kept;
+  for (auto const& p : v)
+    if (kept.empty() || turns_left(kept.back(), p)) kept.push_back(p);
+  while (kept.size() > 3 && !turns_left(kept.back(), kept.front())) kept.pop_back();
+  ring out;
+  out.reserve(kept.size());
+  for (auto const& p : kept) out.emplace_back(rational(static_cast<long>(p.x)), rational(static_cast<long>(p.y)));
+  return out;
+}
+
+/// K×K squares of side 1 at (2i + d, 2j + d), i, j < K.
+multipolygon grid(std::size_t k, rational const& d) {
+  multipolygon m;
+  m.reserve(k * k);
+  for (std::size_t i = 0; i < k; ++i)
+    for (std::size_t j = 0; j < k; ++j) {
+      rational x0 = rational(static_cast<long>(2 * i)) + d, y0 = rational(static_cast<long>(2 * j)) + d;
+      rational x1 = x0 + 1, y1 = y0 + 1;
+      m.push_back({ring{P(x0, y0), P(x1, y0), P(x1, y1), P(x0, y1)}, {}});
+    }
+  return m;
+}
+
+std::size_t vertex_count(multipolygon const& m) {
+  std::size_t n = 0;
+  for (auto const& p : m) {
+    n += p.outer.size();
+    for (auto const& h : p.holes) n += h.size();
+  }
+  return n;
+}
+
+std::size_t ring_count(multipolygon const& m) {
+  std::size_t n = 0;
+  for (auto const& p : m) n += 1 + p.holes.size();
+  return n;
+}
+
+bmulti to_boost(multipolygon const& m) {
+  auto conv = [](ring const& r) {
+    std::vector<bpoint> out;
+    for (auto const& p : r) out.emplace_back(p.x().convert_to<double>(), p.y().convert_to<double>());
+    return out;
+  };
+  bmulti out;
+  for (auto const& p : m) {
+    bpolygon q;
+    for (auto const& pt : conv(p.outer)) q.outer().push_back(pt);
+    for (auto const& h : p.holes) {
+      q.inners().emplace_back();
+      for (auto const& pt : conv(h)) q.inners().back().push_back(pt);
+    }
+    out.push_back(std::move(q));
+  }
+  bg::correct(out); // Boost's orientation (clockwise outer rings) and closed rings
+  return out;
+}
+
+// ---------------------------------------------------------------------------
+// Measurement
+
+/// Output size and area of one library's result.
+struct output_size {
+  std::size_t polygons = 0, rings = 0, vertices = 0;
+  double area = 0;
+};
+
+struct measurement {
+  std::string status = "not run";                ///< "ok", "not finished", "skipped" or "error: …"
+  std::vector<double> runs;                      ///< seconds of each run (whole job)
+  std::vector<double> build, merge, output;      ///< genbsp: seconds of each phase of each run
+  double seconds = 0;                            ///< median of `runs`
+  double build_s = 0, merge_s = 0, output_s = 0; ///< medians of the phases
+  output_size out;
+  std::size_t area_bits = 0; ///< genbsp: bits of the exact area's numerator and denominator
+  /// genbsp: interior nodes and depth of the trees of A, of B and of the result.
+  std::size_t tree_nodes[3] = {0, 0, 0}, tree_depth[3] = {0, 0, 0};
+  bool valid = true;          ///< Boost: bg::is_valid of its output
+  std::string invalid_reason; ///< Boost: why bg::is_valid refuses its output
+};
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
+}
+
+/// Whether another run is due after `runs`: at least `repetitions`, more
+/// while short runs add up to less than `min_total`, none after a long run.
+bool another_run(std::vector<double> const& runs, options const& o) {
+  if (runs.empty()) return true;
+  if (runs.back() >= o.long_run) return false;
+  double total = 0;
+  for (double s : runs) total += s;
+  int n = static_cast<int>(runs.size());
+  return n < o.repetitions || (n < o.max_repetitions && total < o.min_total);
+}
+
+void write_all(int fd, std::string const& s) {
+  std::size_t done = 0;
+  while (done < s.size()) {
+    ssize_t w = ::write(fd, s.data() + done, s.size() - done);
+    if (w < 0 && errno == EINTR) continue;
+    if (w <= 0) return;
+    done += static_cast<std::size_t>(w);
+  }
+}
+
+/// Lines a measuring child process sends: "run SECONDS [BUILD MERGE OUTPUT]"
+/// after each run, "result POLYGONS RINGS VERTICES AREA EXTRA" after the
+/// first (EXTRA: bits of genbsp's exact area, or whether Boost's output is
+/// valid), for genbsp also "trees NODES DEPTH …" (A, B, result), for an
+/// invalid Boost output "invalid REASON", then "done", or "error MESSAGE".
+void send_run(int fd, double total, double build = -1, double merge = -1, double output = -1) {
+  char line[160];
+  std::snprintf(line, sizeof line, "run %.9g %.9g %.9g %.9g\n", total, build, merge, output);
+  write_all(fd, line);
+}
+
+void send_result(int fd, std::size_t polygons, std::size_t rings, std::size_t vertices, double area,
+                 std::size_t extra) {
+  char line[160];
+  std::snprintf(line, sizeof line, "result %zu %zu %zu %.17g %zu\n", polygons, rings, vertices, area, extra);
+  write_all(fd, line);
+}
+
+/// The genbsp runs of one case (in a child process).
+void genbsp_child(int fd, set_op op, multipolygon const& a, multipolygon const& b, options const& o) {
+  std::vector<double> runs;
+  while (another_run(runs, o)) {
+    auto t0 = clock_type::now();
+    auto ra = boolean::operand_of(a);
+    auto rb = boolean::operand_of(b);
+    auto t1 = clock_type::now();
+    // What boolean::combine does, timed in its two parts: the operands'
+    // boundaries classified against both trees, then the rings assembled.
+    auto pieces = bsp::merged_boundary(ra.tree, ra.boundary, rb.tree, rb.boundary,
+                                       [op](bool x, bool y) { return boolean::detail::label_op(op, x, y); });
+    auto t2 = clock_type::now();
+    auto m = boolean::assemble(boolean::detail::left_edges(pieces));
+    auto t3 = clock_type::now();
+    auto d = [](auto x, auto y) { return std::chrono::duration<double>(y - x).count(); };
+    runs.push_back(d(t0, t3));
+    send_run(fd, d(t0, t3), d(t0, t1), d(t1, t2), d(t2, t3));
+    if (runs.size() == 1) {
+      auto area = boolean::area(m);
+      send_result(fd, m.size(), ring_count(m), vertex_count(m), area.convert_to<double>(), geometry::bit_length(area));
+      auto sa = ra.tree.statistics(), sb = rb.tree.statistics();
+      bsp::tree_statistics sr; // no merged tree is built
+      char line[160];
+      std::snprintf(line, sizeof line, "trees %zu %zu %zu %zu %zu %zu\n", sa.interior_nodes, sa.depth,
+                    sb.interior_nodes, sb.depth, sr.interior_nodes, sr.depth);
+      write_all(fd, line);
+    }
+  }
+}
+
+/// The Boost.Geometry runs of one case (in a child process).
+void boost_child(int fd, set_op op, bmulti const& a, bmulti const& b, options const& o) {
+  std::vector<double> runs;
+  while (another_run(runs, o)) {
+    bmulti out;
+    auto t0 = clock_type::now();
+    if (op == set_op::union_)
+      bg::union_(a, b, out);
+    else
+      bg::intersection(a, b, out);
+    runs.push_back(seconds_since(t0));
+    send_run(fd, runs.back());
+    if (runs.size() == 1) {
+      std::size_t rings = 0, vertices = 0;
+      for (auto const& p : out) {
+        rings += 1 + p.inners().size();
+        vertices += p.outer().size() - 1; // closed rings repeat their first point
+        for (auto const& h : p.inners()) vertices += h.size() - 1;
+      }
+      std::string why;
+      bool valid = bg::is_valid(out, why);
+      send_result(fd, out.size(), rings, vertices, bg::area(out), valid ? 1 : 0);
+      if (!valid) {
+        std::replace(why.begin(), why.end(), '\n', ' ');
+        write_all(fd, "invalid " + why + "\n");
+      }
+    }
+  }
+}
+
+/// Runs `body(fd)` in a child process that reports on `fd`, and collects its
+/// report; stops the child when it stays silent for longer than the limit
+/// (one run, or the checks after the first).  Runs completed before a stop
+/// still count.
+template <class Body> measurement run_in_child(bool exact, options const& o, Body body) {
+  measurement m;
+  int fds[2];
+  if (::pipe(fds) != 0) {
+    m.status = std::string("error: pipe: ") + std::strerror(errno);
+    return m;
+  }
+  std::fflush(stdout);
+  std::fflush(stderr);
+  pid_t pid = ::fork();
+  if (pid < 0) {
+    m.status = std::string("error: fork: ") + std::strerror(errno);
+    ::close(fds[0]);
+    ::close(fds[1]);
+    return m;
+  }
+  if (pid == 0) {
+    ::close(fds[0]);
+    try {
+      body(fds[1]);
+      write_all(fds[1], "done\n");
+    } catch (std::exception const& e) {
+      std::string msg = e.what();
+      std::replace(msg.begin(), msg.end(), '\n', ' ');
+      write_all(fds[1], "error " + msg + "\n");
+    }
+    ::close(fds[1]);
+    ::_exit(0);
+  }
+  ::close(fds[1]);
+  std::string buffer;
+  bool done = false, timed_out = false, got_result = false;
+  auto deadline = clock_type::now() + std::chrono::duration<double>(o.limit);
+  while (!done) {
+    double left = std::chrono::duration<double>(deadline - clock_type::now()).count();
+    if (left <= 0) {
+      timed_out = true;
+      break;
+    }
+    pollfd p{fds[0], POLLIN, 0};
+    int ready = ::poll(&p, 1, static_cast<int>(std::ceil(std::min(left, 1.0) * 1000)));
+    if (ready <= 0) continue; // time out of this poll, or a signal
+    char chunk[4096];
+    ssize_t got = ::read(fds[0], chunk, sizeof chunk);
+    if (got < 0 && errno == EINTR) continue;
+    if (got <= 0) {
+      m.status = "error: the measuring process ended without a result";
+      break;
+    }
+    buffer.append(chunk, static_cast<std::size_t>(got));
+    for (std::size_t nl; (nl = buffer.find('\n')) != std::string::npos;) {
+      std::istringstream in(buffer.substr(0, nl));
+      buffer.erase(0, nl + 1);
+      std::string kind;
+      in >> kind;
+      if (kind == "run") {
+        double total = 0, build = 0, merge = 0, output = 0;
+        in >> total >> build >> merge >> output;
+        m.runs.push_back(total);
+        if (exact) {
+          m.build.push_back(build);
+          m.merge.push_back(merge);
+          m.output.push_back(output);
+        }
+        std::fprintf(stderr, " %.3gs", total);
+      } else if (kind == "result") {
+        std::size_t extra = 0;
+        in >> m.out.polygons >> m.out.rings >> m.out.vertices >> m.out.area >> extra;
+        if (exact)
+          m.area_bits = extra;
+        else
+          m.valid = extra != 0;
+        got_result = true;
+      } else if (kind == "invalid") {
+        std::getline(in >> std::ws, m.invalid_reason);
+      } else if (kind == "trees") {
+        for (int i = 0; i < 3; ++i) in >> m.tree_nodes[i] >> m.tree_depth[i];
+      } else if (kind == "done") {
+        m.status = "ok";
+        done = true;
+      } else if (kind == "error") {
+        std::string rest;
+        std::getline(in, rest);
+        m.status = "error:" + rest;
+        done = true;
+      }
+      deadline = clock_type::now() + std::chrono::duration<double>(o.limit);
+    }
+  }
+  if (timed_out) {
+    ::kill(pid, SIGKILL);
+    m.status = got_result ? "ok" : "not finished";
+  }
+  ::close(fds[0]);
+  int wstatus = 0;
+  while (::waitpid(pid, &wstatus, 0) < 0 && errno == EINTR) {
+  }
+  if (!timed_out && WIFSIGNALED(wstatus)) m.status = "error: signal " + std::to_string(WTERMSIG(wstatus));
+  m.seconds = median(m.runs);
+  m.build_s = median(m.build);
+  m.merge_s = median(m.merge);
+  m.output_s = median(m.output);
+  return m;
+}
+
+// ---------------------------------------------------------------------------
+// Results
+
+struct row {
+  std::string family;                                 ///< "star", "star-narrow" or "grid"
+  std::string op;                                     ///< "union" or "intersection"
+  std::size_t size = 0;                               ///< vertices per star, or grid side K
+  std::size_t input_vertices = 0, input_polygons = 0; ///< both operands together
+  measurement genbsp, boost;
+  bool boost_input_valid = true;
+};
+
+std::optional<double> ratio(row const& r) {
+  if (r.genbsp.status != "ok" || r.boost.status != "ok" || r.boost.seconds <= 0) return std::nullopt;
+  return r.genbsp.seconds / r.boost.seconds;
+}
+
+std::optional<double> area_difference(row const& r) {
+  if (r.genbsp.status != "ok" || r.boost.status != "ok") return std::nullopt;
+  if (r.genbsp.out.area == 0) return r.boost.out.area == 0 ? 0.0 : 1.0;
+  return std::abs(r.boost.out.area - r.genbsp.out.area) / std::abs(r.genbsp.out.area);
+}
+
+std::string cpu_model() {
+  std::ifstream in("/proc/cpuinfo");
+  std::string line;
+  while (std::getline(in, line))
+    if (line.starts_with("model name")) {
+      auto colon = line.find(':');
+      if (colon != std::string::npos) {
+        auto v = line.substr(colon + 1);
+        v.erase(0, v.find_first_not_of(" \t"));
+        return v;
+      }
+    }
+  return "unknown";
+}
+
+std::string load_average() {
+  std::ifstream in("/proc/loadavg");
+  std::string one;
+  in >> one;
+  return in ? one : "unknown";
+}
+
+std::string utc_now() {
+  std::time_t t = std::time(nullptr);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&t));
+  return buf;
+}
+
+std::string compiler() {
+#if defined(__clang__)
+  return "clang " __clang_version__;
+#elif defined(__GNUC__)
+  return "g++ " __VERSION__;
+#else
+  return "unknown";
+#endif
+}
+
+constexpr bool optimised() {
+#if defined(__OPTIMIZE__)
+  return true;
+#else
+  return false;
+#endif
+}
+
+std::string json_string(std::string_view s) {
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += c;
+    } else if (static_cast<unsigned char>(c) < 0x20) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\u%04x", static_cast<unsigned>(static_cast<unsigned char>(c)));
+      out += buf;
+    } else {
+      out += c;
+    }
+  }
+  return out + "\"";
+}
+
+std::string number(double x, int digits = 6) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.*g", digits, x);
+  return buf;
+}
+
+std::string json_optional(std::optional<double> x) { return x ? number(*x) : "null"; }
+
+std::string json_list(std::vector<double> const& v) {
+  std::string s = "[";
+  for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + number(v[i]);
+  return s + "]";
+}
+
+std::string json_measurement(measurement const& m, bool exact) {
+  std::ostringstream j;
+  bool ok = m.status == "ok";
+  j << "{\"status\": " << json_string(m.status) << ", \"runs\": " << json_list(m.runs)
+    << ", \"seconds\": " << (m.runs.empty() ? "null" : number(m.seconds));
+  if (exact)
+    j << ", \"build_seconds\": " << (m.runs.empty() ? "null" : number(m.build_s))
+      << ", \"merge_seconds\": " << (m.runs.empty() ? "null" : number(m.merge_s))
+      << ", \"output_seconds\": " << (m.runs.empty() ? "null" : number(m.output_s))
+      << ", \"build_runs\": " << json_list(m.build) << ", \"merge_runs\": " << json_list(m.merge)
+      << ", \"output_runs\": " << json_list(m.output);
+  if (ok) {
+    j << ", \"polygons\": " << m.out.polygons << ", \"rings\": " << m.out.rings << ", \"vertices\": " << m.out.vertices
+      << ", \"area\": " << number(m.out.area, 17);
+    if (exact)
+      j << ", \"area_exact_bits\": " << m.area_bits << ", \"tree_nodes\": {\"a\": " << m.tree_nodes[0]
+        << ", \"b\": " << m.tree_nodes[1] << ", \"result\": " << m.tree_nodes[2]
+        << "}, \"tree_depth\": {\"a\": " << m.tree_depth[0] << ", \"b\": " << m.tree_depth[1]
+        << ", \"result\": " << m.tree_depth[2] << "}";
+    else
+      j << ", \"output_valid\": " << (m.valid ? "true" : "false")
+        << (m.valid ? std::string() : ", \"output_invalid_reason\": " + json_string(m.invalid_reason));
+  }
+  return j.str() + "}";
+}
+
+/// Writes `text` to `file` through a temporary file, so readers never see a partial file.
+bool write_file(std::string const& file, std::string const& text) {
+  std::filesystem::path target(file), tmp = target;
+  tmp += ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    out << text;
+    out.flush();
+    if (!out) {
+      std::fprintf(stderr, "bench_boolean: cannot write '%s'\n", tmp.string().c_str());
+      return false;
+    }
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, target, ec);
+  if (ec) {
+    std::fprintf(stderr, "bench_boolean: cannot rename '%s' to '%s': %s\n", tmp.string().c_str(), file.c_str(),
+                 ec.message().c_str());
+    std::filesystem::remove(tmp, ec);
+    return false;
+  }
+  return true;
+}
+
+struct run_info {
+  std::string started, load_start;
+  double seconds = 0;
+  bool finished = false;
+};
+
+std::string json_results(options const& o, std::vector<row> const& rows, run_info const& info) {
+  std::ostringstream j;
+  j << "{\n  \"benchmark\": \"bench_boolean\",\n";
+  j << "  \"machine\": {\"hardware_threads\": " << std::thread::hardware_concurrency()
+    << ", \"cpu\": " << json_string(cpu_model()) << ", \"compiler\": " << json_string(compiler())
+    << ", \"optimised\": " << (optimised() ? "true" : "false") << ", \"boost\": " << json_string(BOOST_LIB_VERSION)
+    << ", \"gmp\": " << json_string(gmp_version) << "},\n";
+  j << "  \"run\": {\"started\": " << json_string(info.started) << ", \"load_average_start\": " << info.load_start
+    << ", \"load_average_now\": " << load_average() << ", \"seconds\": " << number(info.seconds)
+    << ", \"finished\": " << (info.finished ? "true" : "false") << "},\n";
+  j << "  \"settings\": {\"quick\": " << (o.quick ? "true" : "false") << ", \"seed\": " << o.seed
+    << ", \"limit_seconds\": " << number(o.limit) << ", \"long_run_seconds\": " << number(o.long_run)
+    << ", \"repetitions\": " << o.repetitions << ", \"max_repetitions\": " << o.max_repetitions
+    << ", \"min_total_seconds\": " << number(o.min_total)
+    << ",\n    \"star\": \"two star polygons of n vertices, integer coordinates, radii uniform in [3e5, 1e6], "
+       "centres (0, 0) and (150000, 100000)\""
+    << ",\n    \"star-narrow\": \"the same with radii uniform in [9e5, 1e6]\""
+    << ",\n    \"grid\": \"K x K unit squares [2i, 2i+1] x [2j, 2j+1] against the same squares shifted by (1/2, 1/2)\""
+    << ",\n    \"genbsp_time\": \"operand_of(A) + operand_of(B) + merged_boundary + assemble (= boolean::combine)\""
+    << ",\n    \"boost_time\": \"bg::union_ or bg::intersection on corrected double multi_polygons\"},\n";
+  j << "  \"results\": [\n";
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    auto const& r = rows[i];
+    j << "    {\"family\": " << json_string(r.family) << ", \"operation\": " << json_string(r.op)
+      << ", \"size\": " << r.size << ", \"input_vertices\": " << r.input_vertices
+      << ", \"input_polygons\": " << r.input_polygons
+      << ", \"boost_input_valid\": " << (r.boost_input_valid ? "true" : "false") << ",\n"
+      << "     \"genbsp\": " << json_measurement(r.genbsp, true) << ",\n"
+      << "     \"boost\": " << json_measurement(r.boost, false) << ",\n"
+      << "     \"genbsp_over_boost\": " << json_optional(ratio(r))
+      << ", \"area_relative_difference\": " << json_optional(area_difference(r)) << "}"
+      << (i + 1 < rows.size() ? "," : "") << "\n";
+  }
+  j << "  ]\n}\n";
+  return j.str();
+}
+
+std::string csv_results(std::vector<row> const& rows) {
+  std::ostringstream c;
+  c << "family,operation,size,input_vertices,input_polygons,"
+       "genbsp_status,genbsp_runs,genbsp_seconds,genbsp_build_seconds,genbsp_merge_seconds,genbsp_output_seconds,"
+       "genbsp_polygons,genbsp_rings,genbsp_vertices,genbsp_area,"
+       "boost_status,boost_runs,boost_seconds,boost_polygons,boost_rings,boost_vertices,boost_area,boost_output_valid,"
+       "genbsp_over_boost,area_relative_difference\n";
+  auto opt = [](std::optional<double> x) { return x ? number(*x) : std::string(); };
+  for (auto const& r : rows) {
+    auto const &g = r.genbsp, &b = r.boost;
+    bool gok = g.status == "ok", bok = b.status == "ok";
+    auto quoted = [](std::string s) {
+      std::string out = "\"";
+      for (char ch : s) out += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+      return out + "\"";
+    };
+    c << r.family << ',' << r.op << ',' << r.size << ',' << r.input_vertices << ',' << r.input_polygons << ','
+      << quoted(g.status) << ',' << g.runs.size() << ',' << (g.runs.empty() ? "" : number(g.seconds)) << ','
+      << (g.runs.empty() ? "" : number(g.build_s)) << ',' << (g.runs.empty() ? "" : number(g.merge_s)) << ','
+      << (g.runs.empty() ? "" : number(g.output_s)) << ',';
+    if (gok)
+      c << g.out.polygons << ',' << g.out.rings << ',' << g.out.vertices << ',' << number(g.out.area, 17) << ',';
+    else
+      c << ",,,,";
+    c << quoted(b.status) << ',' << b.runs.size() << ',' << (b.runs.empty() ? "" : number(b.seconds)) << ',';
+    if (bok)
+      c << b.out.polygons << ',' << b.out.rings << ',' << b.out.vertices << ',' << number(b.out.area, 17) << ','
+        << (b.valid ? "true" : "false") << ',';
+    else
+      c << ",,,,,";
+    c << opt(ratio(r)) << ',' << opt(area_difference(r)) << '\n';
+  }
+  return c.str();
+}
+
+void print_header() {
+  std::printf("%-11s %-12s %6s %7s | %9s %9s %9s %9s %18s | %9s %18s | %8s %9s\n", "family", "operation", "size",
+              "in vert", "genbsp s", "build", "merge", "output", "out P/R/V", "boost s", "out P/R/V", "ratio",
+              "area diff");
+}
+
+std::string sizes(measurement const& m) {
+  if (m.status != "ok") return m.status.substr(0, 18);
+  return std::to_string(m.out.polygons) + "/" + std::to_string(m.out.rings) + "/" + std::to_string(m.out.vertices);
+}
+
+void print_row(row const& r) {
+  auto s = [](measurement const& m, double x) { return m.runs.empty() ? std::string("-") : number(x, 3); };
+  auto q = ratio(r);
+  auto d = area_difference(r);
+  std::printf("%-11s %-12s %6zu %7zu | %9s %9s %9s %9s %18s | %9s %18s | %8s %9s\n", r.family.c_str(), r.op.c_str(),
+              r.size, r.input_vertices, s(r.genbsp, r.genbsp.seconds).c_str(), s(r.genbsp, r.genbsp.build_s).c_str(),
+              s(r.genbsp, r.genbsp.merge_s).c_str(), s(r.genbsp, r.genbsp.output_s).c_str(), sizes(r.genbsp).c_str(),
+              s(r.boost, r.boost.seconds).c_str(), sizes(r.boost).c_str(), q ? (number(*q, 3) + "x").c_str() : "-",
+              d ? number(*d, 2).c_str() : "-");
+  std::fflush(stdout);
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  options o;
+  if (auto code = parse_options(argc, argv, o)) return *code;
+  std::signal(SIGPIPE, SIG_IGN);
+
+  run_info info;
+  info.started = utc_now();
+  info.load_start = load_average();
+  auto start = clock_type::now();
+  std::printf("bench_boolean: %s, %u hardware threads, %s, Boost %s, GMP %s\n", cpu_model().c_str(),
+              std::thread::hardware_concurrency(), compiler().c_str(), BOOST_LIB_VERSION, gmp_version);
+  std::printf("load average %s at the start; seed %llu; limit %g s per run%s\n", info.load_start.c_str(),
+              static_cast<unsigned long long>(o.seed), o.limit, o.quick ? " (--quick)" : "");
+  if (!optimised()) std::printf("warning: built without optimisation; the numbers mean little\n");
+  std::printf("times in seconds (median); genbsp = build (operand_of both) + classify (merged_boundary) + output (assemble); "
+              "ratio = genbsp / Boost; area diff = |Boost - exact| / exact\n\n");
+  print_header();
+
+  std::vector<row> rows;
+  auto save = [&] {
+    info.seconds = seconds_since(start);
+    bool ok = true;
+    if (o.json) ok = write_file(*o.json, json_results(o, rows, info)) && ok;
+    if (o.csv) ok = write_file(*o.csv, csv_results(rows)) && ok;
+    return ok;
+  };
+
+  struct series {
+    std::string family;
+    std::vector<std::size_t> sizes;
+    double min_radius; ///< stars: the smallest radius, as a fraction of the largest
+  };
+  std::vector<series> all{{"star", o.stars, 0.3}, {"star-narrow", o.narrow_stars, 0.9}, {"grid", o.grids, 0}};
+  bool write_ok = true;
+  for (auto const& s : all) {
+    // Per library and operation: a smaller size did not finish, so larger ones are skipped.
+    bool stopped[2][2] = {{false, false}, {false, false}};
+    for (std::size_t index = 0; index < s.sizes.size(); ++index) {
+      std::size_t n = s.sizes[index];
+      multipolygon a, b;
+      if (s.family != "grid") {
+        constexpr double radius = 1e6;
+        std::mt19937_64 ra(o.seed + 2 * n), rb(o.seed + 2 * n + 1);
+        a.push_back({random_star(ra, n, 0, 0, radius, s.min_radius), {}});
+        b.push_back({random_star(rb, n, 150000, 100000, radius, s.min_radius), {}});
+      } else {
+        a = grid(n, rational(0));
+        b = grid(n, rational(1, 2));
+      }
+      bmulti ba = to_boost(a), bb = to_boost(b);
+      bool boost_valid = bg::is_valid(ba) && bg::is_valid(bb);
+      for (int k = 0; k < 2; ++k) {
+        if (!(k == 0 ? o.union_ : o.intersection)) continue;
+        set_op op = k == 0 ? set_op::union_ : set_op::intersection;
+        row r;
+        r.family = s.family;
+        r.op = k == 0 ? "union" : "intersection";
+        r.size = n;
+        r.input_vertices = vertex_count(a) + vertex_count(b);
+        r.input_polygons = a.size() + b.size();
+        r.boost_input_valid = boost_valid;
+        std::fprintf(stderr, "%s %s %zu (%zu input vertices):", r.family.c_str(), r.op.c_str(), n, r.input_vertices);
+        for (int lib = 0; lib < 2; ++lib) {
+          if (!(lib == 0 ? o.genbsp : o.boost)) continue;
+          measurement& m = lib == 0 ? r.genbsp : r.boost;
+          std::fprintf(stderr, "%s", lib == 0 ? " genbsp" : "; boost");
+          if (stopped[lib][k]) {
+            m.status = "skipped";
+            std::fprintf(stderr, " skipped (a smaller size did not finish)");
+            continue;
+          }
+          if (lib == 0)
+            m = run_in_child(true, o, [&](int fd) { genbsp_child(fd, op, a, b, o); });
+          else
+            m = run_in_child(false, o, [&](int fd) { boost_child(fd, op, ba, bb, o); });
+          if (m.status == "not finished") {
+            stopped[lib][k] = true;
+            std::fprintf(stderr, " not finished within %g s", o.limit);
+          } else if (m.status != "ok") {
+            std::fprintf(stderr, " %s", m.status.c_str());
+          }
+        }
+        std::fprintf(stderr, " [%.0f s so far]\n", seconds_since(start));
+        rows.push_back(std::move(r));
+        print_row(rows.back());
+        write_ok = save() && write_ok;
+      }
+    }
+  }
+  info.finished = true;
+  write_ok = save() && write_ok;
+  std::printf("\n%.1f s in all; load average %s at the end\n", seconds_since(start), load_average().c_str());
+  if (o.json) std::printf("results written to %s\n", o.json->c_str());
+  if (o.csv) std::printf("results written to %s\n", o.csv->c_str());
+  bool errors = std::any_of(rows.begin(), rows.end(), [](row const& r) {
+    return r.genbsp.status.starts_with("error") || r.boost.status.starts_with("error");
+  });
+  if (errors) std::fprintf(stderr, "bench_boolean: some cases failed (see the status fields)\n");
+  return errors || !write_ok ? 1 : 0;
+}
