@@ -30,6 +30,9 @@ import platform
 import subprocess
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from report import table  # noqa: E402  (the Markdown table of the map benchmark's report)
+
 TARGET = 3.0  # genbsp's time may be at most this multiple of Boost.Geometry's
 BEGIN = "<!-- boolean-report:begin -->"
 END = "<!-- boolean-report:end -->"
@@ -115,18 +118,6 @@ def fe(x):
     return "0" if x == 0 else f"{x:.1e}"
 
 
-def table(header, rows, align=None):
-    """A Markdown table with padded columns; align: 'l' or 'r' per column."""
-    align = align or ["l"] + ["r"] * (len(header) - 1)
-    cells = [[str(c) for c in header]] + [[str(c) for c in r] for r in rows]
-    widths = [max(len(r[i]) for r in cells) for i in range(len(header))]
-
-    def line(r):
-        return "| " + " | ".join(c.rjust(w) if a == "r" else c.ljust(w)
-                                 for c, w, a in zip(r, widths, align)) + " |"
-    rule = "| " + " | ".join(("-" * (w - 1) + ":") if a == "r" else "-" * w
-                             for w, a in zip(widths, align)) + " |"
-    return "\n".join([line(cells[0]), rule] + [line(r) for r in cells[1:]])
 
 
 def status_text(m, limit):
