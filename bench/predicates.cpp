@@ -33,6 +33,8 @@
 #include <thread>
 #include <vector>
 
+#include "common.hpp"
+
 namespace {
 
 using geometry::rational;
@@ -501,40 +503,9 @@ std::string cpu_model() {
   return "unknown";
 }
 
-std::string compiler() {
-#if defined(__clang__)
-  return "clang " __clang_version__;
-#elif defined(__GNUC__)
-  return "g++ " __VERSION__;
-#else
-  return "unknown";
-#endif
-}
-
-constexpr bool optimised() {
-#if defined(__OPTIMIZE__)
-  return true;
-#else
-  return false;
-#endif
-}
-
-std::string json_string(std::string_view s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (static_cast<unsigned char>(c) < 0x20) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\u%04x", static_cast<unsigned>(static_cast<unsigned char>(c)));
-      out += buf;
-    } else {
-      out += c;
-    }
-  }
-  return out + "\"";
-}
+using bench::compiler;
+using bench::json_string;
+using bench::optimised;
 
 std::string json_number(double x) {
   char buf[32];
