@@ -6,9 +6,10 @@
 ///
 /// Every predicate here is the sign of a polynomial that is homogeneous in
 /// each argument vector (a projective predicate), so each exact vector may be
-/// replaced by any positive multiple.  Each `hvec` over an exact field caches
-/// the `double`s of its *integer* multiple (its coordinates times the least
-/// common multiple of their denominators), which gives two stages:
+/// replaced by any positive multiple.  Each `hvec` over an exact field keeps
+/// its *primitive integer* multiple (its coordinates times the least common
+/// multiple of their denominators, divided by the greatest common divisor of
+/// the results) and the `double`s of it, which gives two stages:
 ///
 /// 1. **Exact in double.**  When every input coordinate is an integer below
 ///    2^53 and so is `m` below (the polynomial evaluated on absolute values,
@@ -27,7 +28,9 @@
 ///    so nothing overflows; integers are at least 1, so nothing underflows.
 ///    When `m == 0` every monomial is exactly zero, and so is the sign.
 ///
-/// Only when both stages fail is the polynomial evaluated in exact arithmetic.
+/// Only when both stages fail is the polynomial evaluated in exact arithmetic,
+/// on those integers: in 128-bit integers when a bound on its values allows,
+/// else in GMP integers.
 #pragma once
 
 #include "number.hpp"
@@ -37,6 +40,9 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <memory>
+#include <mutex>
+#include <optional>
 #include <type_traits>
 #include <utility>
 
@@ -94,24 +100,65 @@ template <std::size_t N> struct approximation {
   friend bool operator==(approximation const&, approximation const&) = default;
 };
 
-/// Fills `a` from the exact coordinates `c`.
-template <std::size_t N> void approximate(std::array<rational, N> const& c, approximation<N>& a) {
+/// The exact coordinates of an `hvec` over an exact field.
+template <std::size_t N> struct exact_coordinates {
+  std::array<rational, N> c;
+  /// The primitive integer multiple of `c`: `c` times the least common
+  /// multiple of its denominators, divided by the greatest common divisor
+  /// of the results (a positive factor, so every projective sign is kept).
+  std::array<integer, N> z;
+};
+
+/// The coordinates of a vector and of its opposite, kept once and shared by
+/// every copy of either (they are never changed after construction).  The
+/// opposite's numbers are made the first time they are asked for, so
+/// turning a vector round (`-v`) costs no number at all.
+template <std::size_t N> class exact_pair {
+public:
+  exact_pair() = default;
+  explicit exact_pair(exact_coordinates<N> p) : positive_(std::move(p)) {}
+
+  exact_coordinates<N> const& get(bool negated) const {
+    if (!negated) return positive_;
+    std::call_once(once_, [this] {
+      exact_coordinates<N> m;
+      for (std::size_t i = 0; i < N; ++i) m.c[i] = -positive_.c[i], m.z[i] = -positive_.z[i];
+      negative_ = std::move(m);
+    });
+    return *negative_;
+  }
+
+private:
+  exact_coordinates<N> positive_;
+  mutable std::once_flag once_;
+  mutable std::optional<exact_coordinates<N>> negative_;
+};
+
+/// The primitive integer multiple of `c` (see `exact_coordinates::z`).
+template <std::size_t N> std::array<integer, N> integer_multiple(std::array<rational, N> const& c) {
   integer scale(1);
   for (auto const& x : c) {
     auto const* den = mpq_denref(x.backend().data());
     if (mpz_cmp_ui(den, 1) != 0) mpz_lcm(scale.backend().data(), scale.backend().data(), den);
   }
-  bool unit = scale == 1;
-  integer n;
-  a.integral = true;
+  std::array<integer, N> r;
+  integer g(0);
   for (std::size_t i = 0; i < N; ++i) {
     auto const* q = c[i].backend().data();
-    mpz_srcptr num = mpq_numref(q);
-    if (!unit) {
-      mpz_divexact(n.backend().data(), scale.backend().data(), mpq_denref(q));
-      mpz_mul(n.backend().data(), n.backend().data(), mpq_numref(q));
-      num = n.backend().data();
-    }
+    mpz_divexact(r[i].backend().data(), scale.backend().data(), mpq_denref(q));
+    mpz_mul(r[i].backend().data(), r[i].backend().data(), mpq_numref(q));
+    mpz_gcd(g.backend().data(), g.backend().data(), r[i].backend().data());
+  }
+  if (mpz_cmp_ui(g.backend().data(), 1) > 0)
+    for (auto& x : r) mpz_divexact(x.backend().data(), x.backend().data(), g.backend().data());
+  return r;
+}
+
+/// Fills `a` from the integers `z`.
+template <std::size_t N> void approximate(std::array<integer, N> const& z, approximation<N>& a) {
+  a.integral = true;
+  for (std::size_t i = 0; i < N; ++i) {
+    mpz_srcptr num = z[i].backend().data();
     std::size_t bits = mpz_sgn(num) == 0 ? 0 : mpz_sizeinbase(num, 2);
     if (bits > 190) {
       a.v[i] = std::numeric_limits<double>::quiet_NaN();
@@ -121,22 +168,6 @@ template <std::size_t N> void approximate(std::array<rational, N> const& c, appr
     a.v[i] = mpz_get_d(num); // truncates: relative error below 2u
     a.integral = a.integral && bits <= 53;
   }
-}
-
-/// The integer multiple of an exact vector that the filter approximates.
-template <std::size_t N> std::array<integer, N> integer_multiple(std::array<rational, N> const& c) {
-  integer scale(1);
-  for (auto const& x : c) {
-    auto const* den = mpq_denref(x.backend().data());
-    if (mpz_cmp_ui(den, 1) != 0) mpz_lcm(scale.backend().data(), scale.backend().data(), den);
-  }
-  std::array<integer, N> r;
-  for (std::size_t i = 0; i < N; ++i) {
-    auto const* q = c[i].backend().data();
-    mpz_divexact(r[i].backend().data(), scale.backend().data(), mpq_denref(q));
-    mpz_mul(r[i].backend().data(), r[i].backend().data(), mpq_numref(q));
-  }
-  return r;
 }
 
 __extension__ using int128 = __int128; ///< exact when no value exceeds 2^126
@@ -188,45 +219,94 @@ constexpr depth_counter operator-(depth_counter a) { return a; }
 } // namespace detail
 
 /// A vector of `N` homogeneous coordinates — a point, a direction or a
-/// hyperplane's coefficients.  Over an exact field it caches the `double`
-/// approximations the filter starts from.
+/// hyperplane's coefficients.  Over an exact field its exact coordinates
+/// and their primitive integer multiple live once, shared by every copy (a
+/// copy costs a reference count, never a number), and each copy carries the
+/// `double` approximations the filter starts from.
 template <number FT, std::size_t N> class hvec {
+  static constexpr bool is_exact = exact_field<FT>;
+  using shared = detail::exact_pair<N>;
+
 public:
   using value_type = FT;
   static constexpr std::size_t size = N;
 
-  hvec() { refresh(); }
-  explicit hvec(std::array<FT, N> c) : c_(std::move(c)) { refresh(); }
+  hvec() {
+    if constexpr (is_exact) s_ = zero();
+  }
+  explicit hvec(std::array<FT, N> c) {
+    if constexpr (is_exact) {
+      auto z = detail::integer_multiple(c);
+      detail::approximate(z, a_);
+      s_ = std::make_shared<shared const>(detail::exact_coordinates<N>{std::move(c), std::move(z)});
+    } else {
+      c_ = std::move(c);
+    }
+  }
 
-  FT const& operator[](std::size_t i) const noexcept { return c_[i]; }
-  std::array<FT, N> const& exact() const noexcept { return c_; }
+  FT const& operator[](std::size_t i) const { return exact()[i]; }
+  std::array<FT, N> const& exact() const {
+    if constexpr (is_exact)
+      return s_->get(negated_).c;
+    else
+      return c_;
+  }
 
   /// The cached approximation (exact fields only).
   detail::approximation<N> const& approx() const noexcept
-    requires exact_field<FT>
+    requires is_exact
   {
     return a_;
   }
 
+  /// The primitive integer multiple of the coordinates (exact fields only).
+  std::array<integer, N> const& integers() const
+    requires is_exact
+  {
+    return s_->get(negated_).z;
+  }
+
+  /// The opposite vector; over an exact field it shares this one's numbers.
   hvec operator-() const {
-    std::array<FT, N> c;
-    for (std::size_t i = 0; i < N; ++i) c[i] = -c_[i];
-    return hvec(std::move(c));
+    hvec r(*this);
+    if constexpr (is_exact) {
+      r.negated_ = !negated_;
+      for (auto& v : r.a_.v) v = -v;
+    } else {
+      for (auto& x : r.c_) x = -x;
+    }
+    return r;
   }
 
   bool is_zero() const {
-    return std::all_of(c_.begin(), c_.end(), [](FT const& x) { return sign_of(x) == sign::zero; });
+    auto const& c = exact();
+    return std::all_of(c.begin(), c.end(), [](FT const& x) { return sign_of(x) == sign::zero; });
   }
 
-  friend bool operator==(hvec const& a, hvec const& b) { return a.c_ == b.c_; }
+  friend bool operator==(hvec const& a, hvec const& b) {
+    if constexpr (is_exact)
+      if (a.s_ == b.s_ && a.negated_ == b.negated_) return true;
+    return a.exact() == b.exact();
+  }
 
 private:
-  void refresh() {
-    if constexpr (exact_field<FT>) detail::approximate(c_, a_);
+  /// The zero vector's coordinates, shared by every default-constructed vector.
+  static std::shared_ptr<shared const> const& zero()
+    requires is_exact
+  {
+    static std::shared_ptr<shared const> const z = std::make_shared<shared const>();
+    return z;
   }
 
-  std::array<FT, N> c_{};
-  [[no_unique_address]] std::conditional_t<exact_field<FT>, detail::approximation<N>, detail::no_approximation> a_{};
+  struct none {
+    friend bool operator==(none, none) = default;
+  };
+  [[no_unique_address]] std::conditional_t<is_exact, none, std::array<FT, N>> c_{};
+  [[no_unique_address]] std::conditional_t<is_exact, std::shared_ptr<shared const>, none> s_{};
+  [[no_unique_address]] std::conditional_t<is_exact, detail::approximation<N>, detail::no_approximation> a_{};
+  struct no_flag {};
+  /// Exact fields: this is the opposite of the shared vector.
+  [[no_unique_address]] std::conditional_t<is_exact, bool, no_flag> negated_{};
 };
 
 namespace detail {
@@ -264,8 +344,8 @@ template <class F, std::size_t... N>
   }
   ++stats.fallbacks;
   if (filter_config().track_bits) (track_bits(v.exact()), ...);
-  // Integer multiples again: integer arithmetic needs no gcd, unlike rationals.
-  return integer_sign(f, integer_multiple(v.exact())...);
+  // The cached integer multiples: integer arithmetic needs no gcd, unlike rationals.
+  return integer_sign(f, v.integers()...);
 }
 
 /// The semi-static stage: `f` in double with its error bound (from the
