@@ -1,8 +1,13 @@
 // Throughput of genbsp's predicates in three modes:
 //   double    FT = double: plain floating point, no guarantee;
-//   filtered  FT = rational, filter on: a semi-static double filter, exact GMP
+//   filtered  FT = rational, filter on: a semi-static double filter, exact
 //             evaluation only when the sign is uncertain (the default);
-//   exact     FT = rational, filter off: every evaluation in GMP.
+//   exact     FT = rational, filter off: every evaluation exact, on the
+//             vectors' integer multiples (128-, 256- or 512-bit integers on
+//             the stack as the predicate's bound allows, GMP past that);
+//   exact GMP the same with the fixed-width rungs off: GMP integers only.
+// Heap allocations (operator new and GMP's) are counted over the timed
+// calls and printed per call.
 // Two input sets per predicate family: random decimals (the filter almost never
 // fails) and near-degenerate ones (points on or a few ulps off the line, plane
 // or circle; concurrent lines and circles), where it fails most of the time.
@@ -24,6 +29,7 @@
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <new>
 #include <optional>
 #include <random>
 #include <sstream>
@@ -349,6 +355,22 @@ struct s2_side_of_vertex {
 };
 
 // ---------------------------------------------------------------------------
+// Heap allocations: every operator new and every GMP allocation is counted,
+// so that the benchmark can print the allocations per predicate call.
+
+std::uint64_t g_allocations = 0;
+
+void* gmp_allocate(std::size_t n) {
+  ++g_allocations;
+  return std::malloc(n);
+}
+void* gmp_reallocate(void* p, std::size_t, std::size_t n) {
+  ++g_allocations;
+  return std::realloc(p, n);
+}
+void gmp_free(void* p, std::size_t) { std::free(p); }
+
+// ---------------------------------------------------------------------------
 // Timing
 
 /// Makes the compiler assume that `p`'s memory is read and written here, so
@@ -379,6 +401,7 @@ struct mode_result {
   std::uint64_t checksum = 0;         ///< of one pass
   std::uint64_t evaluations = 0;      ///< filter counters over the timed repetitions
   std::uint64_t fallbacks = 0;
+  double allocations_per_eval = 0;    ///< heap allocations (operator new and GMP) per call, timed repetitions
 };
 
 double seconds_since(clock_type::time_point t0) {
@@ -412,12 +435,15 @@ template <class Q> mode_result time_mode(std::vector<Q> const& qs, options const
   }
   r.passes = passes;
   geometry::filter_stats() = {};
+  std::uint64_t const allocations0 = g_allocations;
   for (int rep = 0; rep < o.repetitions; ++rep) {
     auto t0 = clock_type::now();
     g_sink += run_passes(qs, passes);
     double s = seconds_since(t0);
     r.repetitions_ns.push_back(s * 1e9 / static_cast<double>(passes * qs.size()));
   }
+  r.allocations_per_eval = static_cast<double>(g_allocations - allocations0) /
+                           static_cast<double>(passes * qs.size() * static_cast<std::uint64_t>(o.repetitions));
   r.evaluations = geometry::filter_stats().evaluations;
   r.fallbacks = geometry::filter_stats().fallbacks;
   auto sorted = r.repetitions_ns;
@@ -430,6 +456,7 @@ struct row {
   std::string family, predicate, input;
   std::size_t queries = 0;
   mode_result plain, filtered, exact;
+  mode_result gmp; ///< always exact, the fixed-width rungs off: GMP integers only
   double fallback_rate = 0;     ///< filtered mode: fallbacks / evaluations
   double double_wrong_rate = 0; ///< plain double: signs different from the exact ones
   bool consistent = true;       ///< filtered and exact signs identical
@@ -459,6 +486,10 @@ row measure(char const* input, std::vector<typename Family::raw> const& raws, op
   config.enabled = false;
   r.exact = time_mode(qr, o);
   auto exact_signs = signs_of(qr);
+  config.fixed_width = false;
+  r.gmp = time_mode(qr, o);
+  auto gmp_signs = signs_of(qr);
+  config.fixed_width = true;
   config.enabled = true;
 
   r.fallback_rate = r.filtered.evaluations
@@ -467,7 +498,8 @@ row measure(char const* input, std::vector<typename Family::raw> const& raws, op
   std::size_t wrong = 0;
   for (std::size_t i = 0; i < exact_signs.size(); ++i) wrong += plain_signs[i] != exact_signs[i];
   r.double_wrong_rate = static_cast<double>(wrong) / static_cast<double>(exact_signs.size());
-  r.consistent = filtered_signs == exact_signs && r.filtered.checksum == r.exact.checksum;
+  r.consistent = filtered_signs == exact_signs && gmp_signs == exact_signs && r.filtered.checksum == r.exact.checksum &&
+                 r.gmp.checksum == r.exact.checksum;
   return r;
 }
 
@@ -475,16 +507,20 @@ row measure(char const* input, std::vector<typename Family::raw> const& raws, op
 // Output
 
 void print_header() {
-  std::printf("%-21s %-10s %9s %9s %9s %8s %9s %8s %9s\n", "family", "input", "double", "filtered", "exact", "filt/dbl",
-              "exact/dbl", "fallback", "dbl wrong");
-  std::printf("%-21s %-10s %9s %9s %9s %8s %9s %8s %9s\n", "", "", "ns/eval", "ns/eval", "ns/eval", "", "", "", "");
+  std::printf("%-21s %-10s %9s %9s %9s %9s %8s %9s %8s %9s %11s\n", "family", "input", "double", "filtered", "exact",
+              "exact GMP", "filt/dbl", "exact/dbl", "fallback", "dbl wrong", "allocations");
+  std::printf("%-21s %-10s %9s %9s %9s %9s %8s %9s %8s %9s %11s\n", "", "", "ns/eval", "ns/eval", "ns/eval", "ns/eval", "",
+              "", "", "", "per eval");
 }
 
 void print_row(row const& r) {
-  std::printf("%-21s %-10s %9.2f %9.2f %9.1f %7.2fx %8.1fx %7.2f%% %8.2f%%%s\n", r.family.c_str(), r.input.c_str(),
-              r.plain.ns_per_eval, r.filtered.ns_per_eval, r.exact.ns_per_eval,
+  // The most of the double, filtered and exact modes (GMP allocates by design).
+  double const allocations =
+      std::max({r.plain.allocations_per_eval, r.filtered.allocations_per_eval, r.exact.allocations_per_eval});
+  std::printf("%-21s %-10s %9.2f %9.2f %9.1f %9.1f %7.2fx %8.1fx %7.2f%% %8.2f%% %11.3g%s\n", r.family.c_str(),
+              r.input.c_str(), r.plain.ns_per_eval, r.filtered.ns_per_eval, r.exact.ns_per_eval, r.gmp.ns_per_eval,
               r.filtered.ns_per_eval / r.plain.ns_per_eval, r.exact.ns_per_eval / r.plain.ns_per_eval,
-              100 * r.fallback_rate, 100 * r.double_wrong_rate, r.consistent ? "" : "  FILTERED != EXACT");
+              100 * r.fallback_rate, 100 * r.double_wrong_rate, allocations, r.consistent ? "" : "  FILTERED != EXACT");
   std::fflush(stdout);
 }
 
@@ -518,7 +554,8 @@ std::string json_mode(mode_result const& m) {
   o << "{\"ns_per_eval\": " << json_number(m.ns_per_eval)
     << ", \"evals_per_second\": " << json_number(1e9 / m.ns_per_eval) << ", \"repetitions_ns_per_eval\": [";
   for (std::size_t i = 0; i < m.repetitions_ns.size(); ++i) o << (i ? ", " : "") << json_number(m.repetitions_ns[i]);
-  o << "], \"passes_per_repetition\": " << m.passes << ", \"checksum\": " << m.checksum << "}";
+  o << "], \"passes_per_repetition\": " << m.passes << ", \"checksum\": " << m.checksum
+    << ", \"allocations_per_eval\": " << json_number(m.allocations_per_eval) << "}";
   return o.str();
 }
 
@@ -539,6 +576,7 @@ bool write_json(std::string const& file, options const& o, std::vector<row> cons
       << "     \"double\": " << json_mode(r.plain) << ",\n"
       << "     \"filtered\": " << json_mode(r.filtered) << ",\n"
       << "     \"exact\": " << json_mode(r.exact) << ",\n"
+      << "     \"exact_gmp\": " << json_mode(r.gmp) << ",\n"
       << "     \"filtered_over_double\": " << json_number(r.filtered.ns_per_eval / r.plain.ns_per_eval)
       << ", \"exact_over_double\": " << json_number(r.exact.ns_per_eval / r.plain.ns_per_eval)
       << ", \"filter_evaluations\": " << r.filtered.evaluations << ", \"filter_fallbacks\": " << r.filtered.fallbacks
@@ -589,9 +627,24 @@ template <class Family> void run_family(options const& o, std::uint64_t index, s
 
 } // namespace
 
+// Every operator new of the program is counted (the GMP ones through
+// mp_set_memory_functions in main).  Not inlined, so that the compiler does
+// not pair the malloc inside with a delete-expression outside.
+[[gnu::noinline]] void* operator new(std::size_t n) {
+  ++g_allocations;
+  if (void* p = std::malloc(n ? n : 1)) return p;
+  throw std::bad_alloc();
+}
+[[gnu::noinline]] void* operator new[](std::size_t n) { return ::operator new(n); }
+[[gnu::noinline]] void operator delete(void* p) noexcept { std::free(p); }
+[[gnu::noinline]] void operator delete[](void* p) noexcept { std::free(p); }
+[[gnu::noinline]] void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+[[gnu::noinline]] void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+
 int main(int argc, char** argv) {
   options o;
   if (auto code = parse_options(argc, argv, o)) return *code;
+  mp_set_memory_functions(gmp_allocate, gmp_reallocate, gmp_free);
 
   auto start = clock_type::now();
   std::printf("bench_predicates: %s, %u hardware threads, %s\n", cpu_model().c_str(),

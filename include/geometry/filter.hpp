@@ -35,6 +35,8 @@
 
 #include "number.hpp"
 
+#include <boost/multiprecision/cpp_int.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -63,6 +65,9 @@ struct filter_settings {
   /// polynomial of the given doubles, filtered; false evaluates it once in
   /// floating point ("plain double", whose signs may contradict each other).
   bool exact_double_signs = true;
+  /// false: the exact stage skips its fixed-width rungs (128, 256 and 512
+  /// bits on the stack) and evaluates in GMP integers (for comparison).
+  bool fixed_width = true;
 };
 
 /// This thread's counters.
@@ -100,13 +105,37 @@ template <std::size_t N> struct approximation {
   friend bool operator==(approximation const&, approximation const&) = default;
 };
 
+/// Integer coordinates as the exact stages read them: the GMP integers, the
+/// largest bit length among them, and a 64-bit copy when every one is below
+/// 2^63, so that a predicate's rung is chosen without asking GMP.
+template <std::size_t N> struct integer_vector {
+  std::array<integer, N> z;
+  int bits = 0;                    ///< every |z[i]| < 2^bits
+  std::array<std::int64_t, N> z64{}; ///< z, when bits <= 63
+
+  integer_vector() = default;
+  explicit integer_vector(std::array<integer, N> v) : z(std::move(v)) {
+    for (auto const& x : z)
+      if (mpz_sgn(x.backend().data()) != 0) bits = std::max(bits, static_cast<int>(mpz_sizeinbase(x.backend().data(), 2)));
+    if (small())
+      for (std::size_t i = 0; i < N; ++i) z64[i] = mpz_get_si(z[i].backend().data());
+  }
+  bool small() const noexcept { return bits <= 63; }
+  integer_vector operator-() const {
+    integer_vector r;
+    r.bits = bits;
+    for (std::size_t i = 0; i < N; ++i) r.z[i] = -z[i], r.z64[i] = -z64[i];
+    return r;
+  }
+};
+
 /// The exact coordinates of an `hvec` over an exact field.
 template <std::size_t N> struct exact_coordinates {
   std::array<rational, N> c;
   /// The primitive integer multiple of `c`: `c` times the least common
   /// multiple of its denominators, divided by the greatest common divisor
   /// of the results (a positive factor, so every projective sign is kept).
-  std::array<integer, N> z;
+  integer_vector<N> z;
 };
 
 /// The coordinates of a vector and of its opposite, kept once and shared by
@@ -122,7 +151,8 @@ public:
     if (!negated) return positive_;
     std::call_once(once_, [this] {
       exact_coordinates<N> m;
-      for (std::size_t i = 0; i < N; ++i) m.c[i] = -positive_.c[i], m.z[i] = -positive_.z[i];
+      for (std::size_t i = 0; i < N; ++i) m.c[i] = -positive_.c[i];
+      m.z = -positive_.z;
       negative_ = std::move(m);
     });
     return *negative_;
@@ -181,30 +211,59 @@ constexpr bits_counter operator-(bits_counter a, bits_counter b) { return {std::
 constexpr bits_counter operator*(bits_counter a, bits_counter b) { return {a.b + b.b}; }
 constexpr bits_counter operator-(bits_counter a) { return a; }
 
-template <std::size_t N> bool fits_int64(std::array<integer, N> const& a) {
-  return std::all_of(a.begin(), a.end(), [](integer const& x) { return mpz_fits_slong_p(x.backend().data()) != 0; });
-}
-template <std::size_t N> std::array<bits_counter, N> bits_of(std::array<integer, N> const& a) {
-  int b = 0;
-  for (auto const& x : a) b = std::max(b, static_cast<int>(mpz_sizeinbase(x.backend().data(), 2)));
+template <std::size_t N> std::array<bits_counter, N> bits_of(integer_vector<N> const& a) {
   std::array<bits_counter, N> r;
-  r.fill({b});
+  r.fill({a.bits});
   return r;
 }
-template <std::size_t N> std::array<int128, N> to_int128(std::array<integer, N> const& a) {
+template <std::size_t N> std::array<int128, N> to_int128(integer_vector<N> const& a) {
   std::array<int128, N> r;
-  for (std::size_t i = 0; i < N; ++i) r[i] = mpz_get_si(a[i].backend().data());
+  for (std::size_t i = 0; i < N; ++i) r[i] = a.z64[i];
   return r;
 }
 
-/// The exact sign of `f` on integer vectors: in 128-bit integers when the
-/// values provably stay below 2^126, else in GMP integers.
-template <class F, std::size_t... N> sign integer_sign(F const& f, std::array<integer, N> const&... a) {
-  if ((fits_int64(a) && ...) && f(bits_of(a)...).b <= 126) {
-    int128 x = f(to_int128(a)...);
-    return x < 0 ? sign::negative : (x > 0 ? sign::positive : sign::zero);
+/// A signed integer of `Bits` bits of magnitude, on the stack: no allocation,
+/// no overflow check (the callers prove their bounds).
+template <unsigned Bits>
+using fixed_integer = boost::multiprecision::number<
+    boost::multiprecision::cpp_int_backend<Bits, Bits, boost::multiprecision::signed_magnitude,
+                                           boost::multiprecision::unchecked, void>,
+    boost::multiprecision::et_off>;
+
+/// `a` as fixed-width integers; every value must be below 2^Bits.
+template <class T, std::size_t N> std::array<T, N> to_fixed(std::array<integer, N> const& a) {
+  std::array<T, N> r;
+  for (std::size_t i = 0; i < N; ++i) {
+    mpz_srcptr z = a[i].backend().data();
+    T x(0);
+    for (std::size_t k = mpz_size(z); k-- > 0;) {
+      x <<= GMP_LIMB_BITS;
+      x |= T(mpz_getlimbn(z, static_cast<mp_size_t>(k)));
+    }
+    r[i] = mpz_sgn(z) < 0 ? T(-x) : x;
   }
-  return sign_of(f(a...));
+  return r;
+}
+
+/// The widths of the fixed-width rungs of `integer_sign`, in bits of magnitude.
+inline constexpr int int128_bits = 126, fixed256_bits = 255, fixed512_bits = 511;
+
+/// The exact sign of `f` on integer vectors, on the first rung of a ladder
+/// whose width provably holds every intermediate value (the bound comes from
+/// the expression itself, evaluated on bit counts): 128-bit integers, then
+/// 256 and 512 bits on the stack, and GMP integers only past 2^511.
+template <class F, std::size_t... N> sign integer_sign(F const& f, integer_vector<N> const&... a) {
+  int const bits = f(bits_of(a)...).b;
+  auto sign_of_value = [](auto const& x) { return x < 0 ? sign::negative : (x > 0 ? sign::positive : sign::zero); };
+  if (filter_config().fixed_width) [[likely]] {
+    if (bits <= int128_bits && (a.small() && ...)) return sign_of_value(f(to_int128(a)...));
+    if (bits <= fixed256_bits) return to_sign(f(to_fixed<fixed_integer<256>>(a.z)...).sign());
+    if (bits <= fixed512_bits) return to_sign(f(to_fixed<fixed_integer<512>>(a.z)...).sign());
+  }
+  return sign_of(f(a.z...));
+}
+template <class F, std::size_t... N> sign integer_sign(F const& f, std::array<integer, N> const&... a) {
+  return integer_sign(f, integer_vector<N>(a)...);
 }
 
 /// Counts the filter's roundings of an expression at compile time.
@@ -238,7 +297,7 @@ public:
     if constexpr (is_exact) {
       auto z = detail::integer_multiple(c);
       detail::approximate(z, a_);
-      s_ = std::make_shared<shared const>(detail::exact_coordinates<N>{std::move(c), std::move(z)});
+      s_ = std::make_shared<shared const>(detail::exact_coordinates<N>{std::move(c), detail::integer_vector<N>(std::move(z))});
     } else {
       c_ = std::move(c);
     }
@@ -261,6 +320,12 @@ public:
 
   /// The primitive integer multiple of the coordinates (exact fields only).
   std::array<integer, N> const& integers() const
+    requires is_exact
+  {
+    return s_->get(negated_).z.z;
+  }
+  /// The same, with its bit length, as the exact stages read it.
+  detail::integer_vector<N> const& integer_view() const
     requires is_exact
   {
     return s_->get(negated_).z;
@@ -345,7 +410,7 @@ template <class F, std::size_t... N>
   ++stats.fallbacks;
   if (filter_config().track_bits) (track_bits(v.exact()), ...);
   // The cached integer multiples: integer arithmetic needs no gcd, unlike rationals.
-  return integer_sign(f, v.integers()...);
+  return integer_sign(f, v.integer_view()...);
 }
 
 /// The semi-static stage: `f` in double with its error bound (from the

@@ -221,3 +221,100 @@ TEST_CASE("over double, signs are exact for the doubles given", "[filter][double
   CHECK(plain_wrong > 0);
   CHECK(exact_wrong == 0);
 }
+
+namespace {
+
+/// A random integer of exactly `bits` bits (top bit set), of random sign.
+integer random_bits(int bits) {
+  integer x(1);
+  for (int i = 1; i < bits; ++i) x = 2 * x + test::uniform(0, 1);
+  return test::uniform(0, 1) ? integer(-x) : x;
+}
+
+/// The largest coefficient size whose bound, as `integer_sign` computes it
+/// for `f` on `K` vectors, stays within `limit` bits.
+template <std::size_t N, std::size_t K, class F> int largest_bits_within(F const& f, int limit) {
+  auto bound = [&](int b) {
+    std::array<detail::bits_counter, N> v;
+    v.fill({b});
+    return [&]<std::size_t... I>(std::index_sequence<I...>) { return f(((void)I, v)...).b; }(std::make_index_sequence<K>{});
+  };
+  int b = 1;
+  while (bound(b + 1) <= limit) ++b;
+  REQUIRE(bound(b) <= limit);
+  REQUIRE(bound(b + 1) > limit);
+  return b;
+}
+
+} // namespace
+
+TEST_CASE("each rung of the exact ladder agrees with GMP at its width boundary", "[filter]") {
+  // For each fixed-width rung (128, 256 and 512 bits), coefficients of the
+  // largest size that rung accepts and of one bit more (the next rung),
+  // random, all of the largest magnitude, and exactly degenerate, against
+  // the sign over GMP integers and over rationals.
+  using Z = integer;
+  auto det3f = [](auto const& x, auto const& y, auto const& z) { return det3(x, y, z); };
+  auto dot4f = [](auto const& x, auto const& y) { return dot(x, y); };
+  auto to_q = [](std::array<Z, 3> const& a) { return std::array<Q, 3>{Q(a[0]), Q(a[1]), Q(a[2])}; };
+  for (int limit : {detail::int128_bits, detail::fixed256_bits, detail::fixed512_bits}) {
+    int const b3 = largest_bits_within<3, 3>(det3f, limit);
+    int const b4 = largest_bits_within<4, 2>(dot4f, limit);
+    for (int extra : {0, 1}) {
+      int wrong = 0, zeros = 0, total = 0;
+      int const bits = b3 + extra;
+      for (int t = 0; t < 120; ++t) {
+        std::array<Z, 3> a, b, c;
+        for (std::size_t i = 0; i < 3; ++i) a[i] = random_bits(bits), b[i] = random_bits(bits), c[i] = random_bits(bits);
+        if (t % 3 == 1) {
+          // Largest magnitudes: every coefficient ±(2^bits − 1).
+          Z m = (Z(1) << bits) - 1;
+          for (auto* v : {&a, &b, &c})
+            for (auto& x : *v) x = test::uniform(0, 1) ? m : Z(-m);
+        } else if (t % 3 == 2) {
+          // Degenerate: the first two columns are constant, so the determinant is 0.
+          b[0] = c[0] = a[0], b[1] = c[1] = a[1];
+          if (t % 2) c[2] += 1; // and one step off it
+        }
+        sign s = detail::integer_sign(det3f, a, b, c);
+        Q truth = test::ref_det3(to_q(a), to_q(b), to_q(c));
+        ++total;
+        zeros += s == sign::zero;
+        wrong += static_cast<int>(s) != truth.sign() || s != sign_of(det3(a, b, c));
+      }
+      int const bits4 = b4 + extra;
+      for (int t = 0; t < 120; ++t) {
+        std::array<Z, 4> p, h;
+        for (std::size_t i = 0; i < 4; ++i) p[i] = random_bits(bits4), h[i] = random_bits(bits4);
+        if (t % 2) h = {p[1], Z(-p[0]), p[3], Z(-p[2])}; // p · h = 0
+        sign s = detail::integer_sign(dot4f, p, h);
+        Q truth = Q(p[0] * h[0]) + Q(p[1] * h[1]) + Q(p[2] * h[2]) + Q(p[3] * h[3]);
+        ++total;
+        zeros += s == sign::zero;
+        wrong += static_cast<int>(s) != truth.sign();
+      }
+      INFO("rung limit " << limit << " bits; det3 coefficients of " << bits << " bits, dot4 of " << bits4);
+      CHECK(total == 240);
+      CHECK(zeros >= 60 + 20); // the degenerate half of dot4, and det3's exact zeros
+      CHECK(wrong == 0);
+    }
+  }
+}
+
+TEST_CASE("exact vectors share their numbers with their copies and their opposite", "[filter]") {
+  std::array<Q, 3> c{Q(1) / 3, Q(-2) / 5, Q(7)};
+  hvec<Q, 3> a(c), b = a, n = -a;
+  CHECK(a == b);
+  CHECK(&a.exact() == &b.exact()); // one set of numbers
+  CHECK(n.exact() == std::array<Q, 3>{Q(-1) / 3, Q(2) / 5, Q(-7)});
+  CHECK(-n == a);
+  CHECK(&(-n).exact() == &a.exact());
+  // The primitive integer multiple: 15 × c = (5, −6, 105), whose gcd is 1.
+  using Z = integer;
+  CHECK(a.integers() == std::array<Z, 3>{Z(5), Z(-6), Z(105)});
+  CHECK(n.integers() == std::array<Z, 3>{Z(-5), Z(6), Z(-105)});
+  hvec<Q, 3> even(std::array<Q, 3>{Q(4), Q(-6), Q(10)});
+  CHECK(even.integers() == std::array<Z, 3>{Z(2), Z(-3), Z(5)});
+  CHECK(hvec<Q, 3>().is_zero());
+  CHECK(det_sign(a, n, hvec<Q, 3>(std::array<Q, 3>{Q(0), Q(1), Q(0)})) == sign::zero);
+}
