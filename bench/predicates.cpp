@@ -435,14 +435,17 @@ template <class Q> mode_result time_mode(std::vector<Q> const& qs, options const
   }
   r.passes = passes;
   geometry::filter_stats() = {};
-  std::uint64_t const allocations0 = g_allocations;
+  std::uint64_t allocations = 0;
+  r.repetitions_ns.reserve(static_cast<std::size_t>(o.repetitions));
   for (int rep = 0; rep < o.repetitions; ++rep) {
+    std::uint64_t const allocations0 = g_allocations;
     auto t0 = clock_type::now();
     g_sink += run_passes(qs, passes);
     double s = seconds_since(t0);
+    allocations += g_allocations - allocations0;
     r.repetitions_ns.push_back(s * 1e9 / static_cast<double>(passes * qs.size()));
   }
-  r.allocations_per_eval = static_cast<double>(g_allocations - allocations0) /
+  r.allocations_per_eval = static_cast<double>(allocations) /
                            static_cast<double>(passes * qs.size() * static_cast<std::uint64_t>(o.repetitions));
   r.evaluations = geometry::filter_stats().evaluations;
   r.fallbacks = geometry::filter_stats().fallbacks;

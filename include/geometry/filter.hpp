@@ -35,8 +35,6 @@
 
 #include "number.hpp"
 
-#include <boost/multiprecision/cpp_int.hpp>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -201,6 +199,7 @@ template <std::size_t N> void approximate(std::array<integer, N> const& z, appro
 }
 
 __extension__ using int128 = __int128; ///< exact when no value exceeds 2^126
+__extension__ using uint128 = unsigned __int128;
 
 /// Bounds the bit length of an expression's values: inputs below 2^b.
 struct bits_counter {
@@ -222,26 +221,72 @@ template <std::size_t N> std::array<int128, N> to_int128(integer_vector<N> const
   return r;
 }
 
-/// A signed integer of `Bits` bits of magnitude, on the stack: no allocation,
-/// no overflow check (the callers prove their bounds).
-template <unsigned Bits>
-using fixed_integer = boost::multiprecision::number<
-    boost::multiprecision::cpp_int_backend<Bits, Bits, boost::multiprecision::signed_magnitude,
-                                           boost::multiprecision::unchecked, void>,
-    boost::multiprecision::et_off>;
+/// A signed integer of 64·L bits in two's complement, on the stack, with
+/// `+ − ×` modulo 2^(64·L).  Those operations are ring homomorphisms from
+/// the integers, so the result of a polynomial is exact whenever its true
+/// value lies in [−2^(64·L−1), 2^(64·L−1)), whatever its intermediate values
+/// do; `integer_sign` proves that bound before it chooses this rung.
+/// (Boost.Multiprecision's fixed-width `cpp_int` was measured here too: no
+/// faster than GMP's integers on these predicates, see docs/benchmarks.md.)
+template <std::size_t L> struct wide_integer {
+  std::array<std::uint64_t, L> w{}; ///< limbs, least significant first
 
-/// `a` as fixed-width integers; every value must be below 2^Bits.
+  wide_integer() = default;
+  /// The value of a GMP integer below 2^(64·L−1) in magnitude.
+  explicit wide_integer(integer const& z) {
+    mpz_srcptr p = z.backend().data();
+    for (std::size_t k = 0; k < mpz_size(p) && k < L; ++k) w[k] = mpz_getlimbn(p, static_cast<mp_size_t>(k));
+    if (mpz_sgn(p) < 0) *this = -*this;
+  }
+
+  friend wide_integer operator+(wide_integer const& a, wide_integer const& b) noexcept {
+    wide_integer r;
+    uint128 carry = 0;
+    for (std::size_t i = 0; i < L; ++i) {
+      carry += static_cast<uint128>(a.w[i]) + b.w[i];
+      r.w[i] = static_cast<std::uint64_t>(carry);
+      carry >>= 64;
+    }
+    return r;
+  }
+  friend wide_integer operator-(wide_integer const& a) noexcept {
+    wide_integer r;
+    uint128 carry = 1;
+    for (std::size_t i = 0; i < L; ++i) {
+      carry += ~a.w[i];
+      r.w[i] = static_cast<std::uint64_t>(carry);
+      carry >>= 64;
+    }
+    return r;
+  }
+  friend wide_integer operator-(wide_integer const& a, wide_integer const& b) noexcept { return a + (-b); }
+  /// The product modulo 2^(64·L): the schoolbook product of the low limbs.
+  friend wide_integer operator*(wide_integer const& a, wide_integer const& b) noexcept {
+    wide_integer r;
+    for (std::size_t i = 0; i < L; ++i) {
+      if (a.w[i] == 0) continue;
+      uint128 carry = 0;
+      for (std::size_t j = 0; i + j < L; ++j) {
+        carry += static_cast<uint128>(a.w[i]) * b.w[j] + r.w[i + j];
+        r.w[i + j] = static_cast<std::uint64_t>(carry);
+        carry >>= 64;
+      }
+    }
+    return r;
+  }
+  /// The sign of the value in two's complement.
+  int sign() const noexcept {
+    if (w[L - 1] >> 63) return -1;
+    for (auto x : w)
+      if (x) return 1;
+    return 0;
+  }
+};
+
+/// `a` as wide integers; every value must be below 2^(64·L−1) in magnitude.
 template <class T, std::size_t N> std::array<T, N> to_fixed(std::array<integer, N> const& a) {
   std::array<T, N> r;
-  for (std::size_t i = 0; i < N; ++i) {
-    mpz_srcptr z = a[i].backend().data();
-    T x(0);
-    for (std::size_t k = mpz_size(z); k-- > 0;) {
-      x <<= GMP_LIMB_BITS;
-      x |= T(mpz_getlimbn(z, static_cast<mp_size_t>(k)));
-    }
-    r[i] = mpz_sgn(z) < 0 ? T(-x) : x;
-  }
+  for (std::size_t i = 0; i < N; ++i) r[i] = T(a[i]);
   return r;
 }
 
@@ -251,14 +296,15 @@ inline constexpr int int128_bits = 126, fixed256_bits = 255, fixed512_bits = 511
 /// The exact sign of `f` on integer vectors, on the first rung of a ladder
 /// whose width provably holds every intermediate value (the bound comes from
 /// the expression itself, evaluated on bit counts): 128-bit integers, then
-/// 256 and 512 bits on the stack, and GMP integers only past 2^511.
+/// 256 and 512 bits on the stack (`wide_integer`), and GMP integers only past
+/// 2^511.
 template <class F, std::size_t... N> sign integer_sign(F const& f, integer_vector<N> const&... a) {
   int const bits = f(bits_of(a)...).b;
   auto sign_of_value = [](auto const& x) { return x < 0 ? sign::negative : (x > 0 ? sign::positive : sign::zero); };
   if (filter_config().fixed_width) [[likely]] {
     if (bits <= int128_bits && (a.small() && ...)) return sign_of_value(f(to_int128(a)...));
-    if (bits <= fixed256_bits) return to_sign(f(to_fixed<fixed_integer<256>>(a.z)...).sign());
-    if (bits <= fixed512_bits) return to_sign(f(to_fixed<fixed_integer<512>>(a.z)...).sign());
+    if (bits <= fixed256_bits) return to_sign(f(to_fixed<wide_integer<4>>(a.z)...).sign());
+    if (bits <= fixed512_bits) return to_sign(f(to_fixed<wide_integer<8>>(a.z)...).sign());
   }
   return sign_of(f(a.z...));
 }
