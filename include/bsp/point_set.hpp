@@ -5,6 +5,8 @@
 #pragma once
 
 #include "concepts/label.hpp"
+#include "concepts/measure.hpp"
+#include "concepts/whole_side.hpp"
 #include "splitter.hpp"
 #include "tree.hpp"
 
@@ -20,7 +22,7 @@ namespace detail {
 /// `split` would put it), found cheaply by a geometry that offers
 /// `whole_side`; 0 when `split` must decide.
 template <geometry G> int whole_side(typename G::sub_hyperplane const& s, typename G::hyperplane const& h) {
-  if constexpr (requires { G::whole_side(s, h); })
+  if constexpr (whole_side_geometry<G>)
     return static_cast<int>(G::whole_side(s, h));
   else
     return 0;
@@ -151,9 +153,10 @@ template <geometry G, class N, class L> std::vector<cell<G>> cells(tree<G, N, L>
 /// The total measure (length, area, volume …, as `G::measure` gives it) of the
 /// cells labelled `which`; nothing when one of them is unbounded.
 template <geometry G, class N, label L>
-auto measure(tree<G, N, L> const& t, L const& which) -> decltype(G::measure(std::declval<typename G::polytope>())) {
-  using M = decltype(G::measure(std::declval<typename G::polytope>()));
-  if constexpr (requires(M m) { m.has_value(); }) {
+  requires measured_space<G>
+measure_t<G> measure(tree<G, N, L> const& t, L const& which) {
+  using M = measure_t<G>;
+  if constexpr (partial_measure<M>) {
     typename M::value_type sum(0);
     for (auto const& c : cells(t)) {
       if (!(t.leaf_data(c.leaf) == which)) continue;

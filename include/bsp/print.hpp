@@ -5,8 +5,10 @@
 
 #include "tree.hpp"
 
+#include <cstddef>
 #include <ostream>
 #include <string>
+#include <vector>
 
 namespace bsp {
 

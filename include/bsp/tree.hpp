@@ -6,6 +6,7 @@
 #pragma once
 
 #include "concepts/geometry.hpp"
+#include "concepts/label.hpp"
 
 #include <algorithm>
 #include <cassert>
@@ -52,7 +53,7 @@ struct tree_statistics {
 /// (interior nodes, leaves) addressed by `node_id`; copying a tree copies
 /// the arenas.  Nodes are added bottom-up (`add_leaf`, `add_interior`) or
 /// hung under a parent (`attach`); a tree has one root.
-template <geometry G, class NodeData = none, class LeafData = none> class tree {
+template <geometry G, tree_payload NodeData = none, tree_payload LeafData = none> class tree {
 public:
   using geometry_type = G;
   using hyperplane = typename G::hyperplane;

@@ -5,7 +5,10 @@
 #include <catch2/catch.hpp>
 #include <geometry/geometry.hpp>
 
+#include <memory>
+#include <optional>
 #include <string>
+#include <type_traits>
 
 namespace {
 
@@ -19,6 +22,31 @@ static_assert(all_models<double>());
 static_assert(all_models<geometry::rational>());
 static_assert(bsp::geometry<archetype::line>);
 static_assert(bsp::cell_space<archetype::line> && bsp::oriented_space<archetype::line>);
+
+// The extension points: every geometry measures its cells; E2, E3 and S2
+// also tell cheaply that a piece lies wholly on one side.
+template <class FT> constexpr bool all_extensions() {
+  using namespace geometry;
+  return bsp::measured_space<e1::kernel<FT>> && bsp::measured_space<e2::kernel<FT>> &&
+         bsp::measured_space<e3::kernel<FT>> && bsp::measured_space<s1::kernel<FT>> &&
+         bsp::measured_space<s2::kernel<FT>> && bsp::whole_side_geometry<e2::kernel<FT>> &&
+         bsp::whole_side_geometry<e3::kernel<FT>> && bsp::whole_side_geometry<s2::kernel<FT>> &&
+         !bsp::whole_side_geometry<e1::kernel<FT>> && !bsp::whole_side_geometry<s1::kernel<FT>>;
+}
+static_assert(all_extensions<double>());
+static_assert(all_extensions<geometry::rational>());
+static_assert(bsp::measured_space<archetype::line> && !bsp::whole_side_geometry<archetype::line>);
+static_assert(bsp::partial_measure<std::optional<long>> && !bsp::partial_measure<double>);
+static_assert(bsp::measure_value<double> && !bsp::measure_value<std::string>);
+static_assert(std::is_same_v<bsp::measure_t<geometry::e2::exact_kernel>, std::optional<geometry::rational>>);
+
+// Payloads: semiregular types only.
+struct no_default {
+  explicit no_default(int) {}
+};
+static_assert(bsp::tree_payload<bsp::none> && bsp::tree_payload<bool> &&
+              bsp::tree_payload<bsp::fragment_list<archetype::line, int>>);
+static_assert(!bsp::tree_payload<std::unique_ptr<int>> && !bsp::tree_payload<no_default>);
 
 // A look-alike that has every member but did not opt in.
 struct look_alike : archetype::line {};
@@ -34,6 +62,7 @@ struct no_split {
 };
 static_assert(bsp::oriented_space<no_split>);
 static_assert(!bsp::cell_space<no_split>);
+static_assert(!bsp::measured_space<no_split>);
 struct no_side {
   using point = long;
   using hyperplane = int;
@@ -60,6 +89,15 @@ static_assert(!bsp::depth_order_payload<std::vector<int>>);
 
 template <> inline constexpr bool bsp::enable_label<colour> = true;
 static_assert(bsp::label<colour>);
+
+// A whole-side test of the wrong shape (it returns nothing) is not taken for one.
+namespace {
+struct void_whole_side : archetype::line {
+  static void whole_side(sub_hyperplane const&, hyperplane const&) {}
+};
+} // namespace
+template <> inline constexpr bool bsp::enable_geometry<void_whole_side> = true;
+static_assert(bsp::geometry<void_whole_side> && !bsp::whole_side_geometry<void_whole_side>);
 
 TEST_CASE("the archetype runs the whole generic tree", "[bsp][concepts]") {
   using G = archetype::line;

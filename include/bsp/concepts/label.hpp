@@ -24,6 +24,16 @@ template <class L> inline constexpr bool enable_label = std::is_integral_v<L>;
 template <class L>
 concept label = enable_label<L> && std::regular<L>;
 
+/// What a tree keeps at a node or a leaf (`bsp::tree`'s `NodeData` and
+/// `LeafData`).
+///
+/// Requirements on a type `T`:
+/// 1. `T` is `std::semiregular`: default-constructible (a new leaf or node
+///    starts with `T{}`) and copyable (copying a tree copies its payloads,
+///    `reduce` keeps one of two equal labels).
+template <class T>
+concept tree_payload = std::semiregular<T>;
+
 /// Opt-in: specialise to `true` for a node payload of a depth-order tree.
 template <class N> inline constexpr bool enable_depth_order_payload = false;
 
