@@ -16,5 +16,7 @@ endfunction()
 
 # tests/consumer: one small program.
 genbsp_install_test(install_and_consume consumer)
+# tests/consumer_bsp: the generic tree alone, without Boost or GMP.
+genbsp_install_test(install_and_consume_bsp bsp)
 # examples/: every example, each checking its own result.
 genbsp_install_test(examples_against_install examples)

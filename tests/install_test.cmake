@@ -2,6 +2,8 @@
 # configures and builds an outside project against that prefix and runs it:
 #
 #   CHECK=consumer (the default): tests/consumer, one small program;
+#   CHECK=bsp: tests/consumer_bsp, the generic tree alone (genbsp::bsp), with
+#              Boost and PkgConfig made unfindable;
 #   CHECK=examples: examples/, every example program, each checking its own
 #                   result (any non-zero exit status fails the test).
 #
@@ -24,10 +26,12 @@ if(NOT DEFINED CHECK OR CHECK STREQUAL "")
 endif()
 if(CHECK STREQUAL "consumer")
   set(project_dir ${SOURCE_DIR}/tests/consumer)
+elseif(CHECK STREQUAL "bsp")
+  set(project_dir ${SOURCE_DIR}/tests/consumer_bsp)
 elseif(CHECK STREQUAL "examples")
   set(project_dir ${SOURCE_DIR}/examples)
 else()
-  message(FATAL_ERROR "install_test.cmake: -DCHECK=${CHECK}: expected consumer or examples")
+  message(FATAL_ERROR "install_test.cmake: -DCHECK=${CHECK}: expected consumer, bsp or examples")
 endif()
 
 # One work folder per check, so that both can run at once (ctest -j).
@@ -63,6 +67,12 @@ else()
   set(CONFIG Release)
 endif()
 
+if(CHECK STREQUAL "bsp")
+  # Any hidden dependency of genbsp::bsp on Boost or GMP fails here.
+  list(APPEND configure_args -DCMAKE_DISABLE_FIND_PACKAGE_Boost=ON -DCMAKE_DISABLE_FIND_PACKAGE_PkgConfig=ON
+       -DGENBSP_TESTS_DIR=${SOURCE_DIR}/tests)
+endif()
+
 run(install ${CMAKE_COMMAND} --install ${BINARY_DIR} --prefix ${prefix} ${install_args})
 run("configure ${CHECK}" ${CMAKE_COMMAND} -S ${project_dir} -B ${project_build} ${configure_args}
     -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_BUILD_TYPE=${CONFIG})
@@ -71,6 +81,8 @@ run("build ${CHECK}" ${CMAKE_COMMAND} --build ${project_build} --config ${CONFIG
 # The programs to run: the consumer, or one per examples/*.cpp (named after it).
 if(CHECK STREQUAL "consumer")
   set(programs consumer)
+elseif(CHECK STREQUAL "bsp")
+  set(programs consumer_bsp)
 else()
   file(GLOB sources RELATIVE ${project_dir} ${project_dir}/*.cpp)
   list(TRANSFORM sources REPLACE "\\.cpp$" "")
