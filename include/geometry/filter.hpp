@@ -29,8 +29,9 @@
 ///    When `m == 0` every monomial is exactly zero, and so is the sign.
 ///
 /// Only when both stages fail is the polynomial evaluated in exact arithmetic,
-/// on those integers: in 128-bit integers when a bound on its values allows,
-/// else in GMP integers.
+/// on those integers, in the narrowest width that a bound on its values
+/// allows: 128-bit integers, 256- or 512-bit `wide_integer`s on the stack,
+/// else GMP integers (see `detail::integer_sign`).
 #pragma once
 
 #include "number.hpp"
