@@ -28,6 +28,19 @@ template <class T> struct split_result {
   bool is_coincident() const noexcept { return coincident != sign::zero; }
 };
 
+/// Where a point lies in the closed intersection of the positive sides of
+/// some hyperplanes, given `side_of(x)`, its side of the hyperplane of each
+/// `x` in `bounds`: `negative` outside, `on` on the boundary, else `positive`.
+template <class Range, class SideOf> oriented_side classify_in(Range const& bounds, SideOf&& side_of) {
+  oriented_side result = oriented_side::positive;
+  for (auto const& b : bounds) {
+    oriented_side s = side_of(b);
+    if (s == oriented_side::negative) return s;
+    if (s == oriented_side::on) result = s;
+  }
+  return result;
+}
+
 /// Identifies where a hyperplane came from (an input edge, a scene line …);
 /// carried unchanged through splits.
 using hyperplane_tag = std::uint32_t;

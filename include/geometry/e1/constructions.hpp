@@ -2,6 +2,7 @@
 /// Constructions of E1: oriented points, intervals, splitting, lengths.
 #pragma once
 
+#include "../detail/split.hpp"
 #include "predicates.hpp"
 
 #include <optional>
@@ -23,11 +24,7 @@ template <number FT> polytope<FT> whole_line() { return {{point_at_infinity<FT>(
 
 /// The parts of `c` on either side of `h`.
 template <number FT> split_result<polytope<FT>> split(polytope<FT> const& c, hyperplane<FT> const& h) {
-  auto r = detail::split_arc(c.bounds, h, h.opposite());
-  split_result<polytope<FT>> out;
-  if (r.negative) out.negative = polytope<FT>{std::move(*r.negative)};
-  if (r.positive) out.positive = polytope<FT>{std::move(*r.positive)};
-  return out;
+  return detail::split_cell(c, h, detail::arc_split);
 }
 
 /// The closed interval [a, b] (a < b).

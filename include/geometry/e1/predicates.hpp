@@ -13,13 +13,7 @@ template <number FT> oriented_side side(hyperplane<FT> const& h, point<FT> const
 
 /// Whether `p` lies in the closed interval (`on` at an end).
 template <number FT> oriented_side classify(polytope<FT> const& c, point<FT> const& p) {
-  oriented_side result = oriented_side::positive;
-  for (auto const& b : c.bounds) {
-    auto s = side(b, p);
-    if (s == oriented_side::negative) return s;
-    if (s == oriented_side::on) result = s;
-  }
-  return result;
+  return classify_in(c.bounds, [&p](hyperplane<FT> const& b) { return side(b, p); });
 }
 
 } // namespace geometry::e1

@@ -25,13 +25,7 @@ template <number FT> sign orientation(point<FT> const& a, point<FT> const& b, po
 
 /// Whether `p` lies in the closed polytope (`on` when on its boundary).
 template <number FT> oriented_side classify(polytope<FT> const& c, point<FT> const& p) {
-  oriented_side result = oriented_side::positive;
-  for (auto const& b : c.bounds) {
-    auto s = to_side(dot_sign(b.n, p.homogeneous()));
-    if (s == oriented_side::negative) return s;
-    if (s == oriented_side::on) result = s;
-  }
-  return result;
+  return classify_in(c.bounds, [&p](hyperplane<FT> const& b) { return side(b, p); });
 }
 
 } // namespace geometry::e2

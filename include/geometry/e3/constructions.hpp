@@ -3,6 +3,7 @@
 /// splitting by a plane, and exact evaluation of implicit vertices.
 #pragma once
 
+#include "../detail/split.hpp"
 #include "predicates.hpp"
 
 #include <algorithm>
@@ -40,21 +41,11 @@ template <number FT> sub_hyperplane<FT> whole_plane(hyperplane<FT> const& h) {
 }
 
 /// The same point set with the opposite orientation.
-template <number FT> sub_hyperplane<FT> opposite(sub_hyperplane<FT> const& s) {
-  return {s.support.opposite(), s.axis, mirrored(s.bounds)};
-}
+template <number FT> sub_hyperplane<FT> opposite(sub_hyperplane<FT> const& s) { return detail::opposite_piece(s); }
 
 /// The parts of the polygon `s` on either side of `h`, or its coincidence with `h`.
 template <number FT> split_result<sub_hyperplane<FT>> split(sub_hyperplane<FT> const& s, hyperplane<FT> const& h) {
-  split_result<sub_hyperplane<FT>> out;
-  out.coincident = parallel(s.support.n, h.n);
-  if (out.is_coincident()) return out;
-  auto r = restrict_to(s.support.n, s.axis, h.n);
-  polygon_bound<FT> hp{h, r}, hn{h.opposite(), -r};
-  auto parts = detail::split_polygon(s.bounds, hp, hn);
-  if (parts.negative) out.negative = sub_hyperplane<FT>{s.support, s.axis, std::move(*parts.negative)};
-  if (parts.positive) out.positive = sub_hyperplane<FT>{s.support, s.axis, std::move(*parts.positive)};
-  return out;
+  return detail::split_piece(s, h, detail::polygon_split);
 }
 
 /// The plane through the edge `p`–`q` that contains the direction of axis `k`

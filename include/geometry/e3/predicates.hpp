@@ -13,13 +13,7 @@ template <number FT> oriented_side side(hyperplane<FT> const& h, point<FT> const
 
 /// Whether `p` lies in the closed polytope (`on` when on its boundary).
 template <number FT> oriented_side classify(polytope<FT> const& c, point<FT> const& p) {
-  oriented_side result = oriented_side::positive;
-  for (auto const& f : c.faces) {
-    auto s = side(f.support, p);
-    if (s == oriented_side::negative) return s;
-    if (s == oriented_side::on) result = s;
-  }
-  return result;
+  return classify_in(c.faces, [&p](sub_hyperplane<FT> const& f) { return side(f.support, p); });
 }
 
 } // namespace geometry::e3

@@ -2,6 +2,7 @@
 /// Constructions of S1: splitting arcs and point pairs, endpoints, lengths.
 #pragma once
 
+#include "../detail/split.hpp"
 #include "predicates.hpp"
 
 #include <cmath>
@@ -28,11 +29,7 @@ template <number FT> polytope<FT> arc(point<FT> const& a, point<FT> const& b) {
 
 /// The parts of `c` on either side of `h`.
 template <number FT> split_result<polytope<FT>> split(polytope<FT> const& c, hyperplane<FT> const& h) {
-  auto r = detail::split_arc(c.bounds, h, h.opposite());
-  split_result<polytope<FT>> out;
-  if (r.negative) out.negative = polytope<FT>{std::move(*r.negative)};
-  if (r.positive) out.positive = polytope<FT>{std::move(*r.positive)};
-  return out;
+  return detail::split_cell(c, h, detail::arc_split);
 }
 
 /// The same points with the opposite orientation: the start of `−n` is the end of `n`.

@@ -3,6 +3,7 @@
 /// by a circle, and evaluation of implicit vertices for output.
 #pragma once
 
+#include "../detail/split.hpp"
 #include "predicates.hpp"
 
 #include <cmath>
@@ -40,11 +41,7 @@ template <number FT> polytope<FT> convex_polygon(std::vector<point<FT>> const& v
 
 /// The parts of `c` on either side of `h`.
 template <number FT> split_result<polytope<FT>> split(polytope<FT> const& c, hyperplane<FT> const& h) {
-  auto r = detail::split_polygon(c.bounds, h, h.opposite());
-  split_result<polytope<FT>> out;
-  if (r.negative) out.negative = polytope<FT>{std::move(*r.negative)};
-  if (r.positive) out.positive = polytope<FT>{std::move(*r.positive)};
-  return out;
+  return detail::split_cell(c, h, detail::polygon_split);
 }
 
 /// The vertices of `c` (none for the sphere and a hemisphere), exact and unnormalised.
@@ -67,21 +64,11 @@ template <number FT> sub_hyperplane<FT> whole_circle(hyperplane<FT> const& h) {
 }
 
 /// The same point set with the opposite orientation.
-template <number FT> sub_hyperplane<FT> opposite(sub_hyperplane<FT> const& s) {
-  return {s.support.opposite(), s.axis, mirrored(s.bounds)};
-}
+template <number FT> sub_hyperplane<FT> opposite(sub_hyperplane<FT> const& s) { return detail::opposite_piece(s); }
 
 /// The parts of the arc `s` on either side of `h`, or its coincidence with `h`.
 template <number FT> split_result<sub_hyperplane<FT>> split(sub_hyperplane<FT> const& s, hyperplane<FT> const& h) {
-  split_result<sub_hyperplane<FT>> out;
-  out.coincident = parallel(s.support.n, h.n);
-  if (out.is_coincident()) return out;
-  auto r = restrict_to(s.support.n, s.axis, h.n);
-  arc_bound<FT> hp{h, r}, hn{h.opposite(), -r};
-  auto parts = detail::split_arc(s.bounds, hp, hn);
-  if (parts.negative) out.negative = sub_hyperplane<FT>{s.support, s.axis, std::move(*parts.negative)};
-  if (parts.positive) out.positive = sub_hyperplane<FT>{s.support, s.axis, std::move(*parts.positive)};
-  return out;
+  return detail::split_piece(s, h, detail::arc_split);
 }
 
 /// The minor arc from `a` to `b` (independent directions), on `circle_through(a, b)`.
