@@ -2,6 +2,7 @@
 /// `s1::kernel<FT>`: the circle S1 as a `bsp::geometry`, for the generic tree.
 #pragma once
 
+#include "../detail/kernel.hpp"
 #include "constructions.hpp"
 
 #include <bsp/concepts/geometry.hpp>
@@ -9,23 +10,12 @@
 namespace geometry::s1 {
 
 /// The circle S1 over the number type `FT`, as the generic BSP tree sees it.
-template <number FT> struct kernel {
-  using number_type = FT;
-  using point = s1::point<FT>;
-  using hyperplane = s1::hyperplane<FT>;
-  using sub_hyperplane = s1::sub_hyperplane<FT>;
-  using polytope = s1::polytope<FT>;
-
-  static oriented_side side(hyperplane const& h, point const& p) { return s1::side(h, p); }
-  static hyperplane opposite(hyperplane const& h) { return h.opposite(); }
-  static sub_hyperplane opposite(sub_hyperplane const& s) { return s1::opposite(s); }
-  static polytope whole_space() { return whole_circle<FT>(); }
-  static sub_hyperplane whole(hyperplane const& h) { return sub_hyperplane{h, true, true}; }
-  static hyperplane const& supporting(sub_hyperplane const& s) { return s.support; }
-  static split_result<polytope> split(polytope const& c, hyperplane const& h) { return s1::split(c, h); }
-  static split_result<sub_hyperplane> split(sub_hyperplane const& s, hyperplane const& h) { return s1::split(s, h); }
+template <number FT>
+struct kernel : detail::kernel_base<FT, s1::point<FT>, s1::hyperplane<FT>, s1::sub_hyperplane<FT>, s1::polytope<FT>> {
+  static s1::polytope<FT> whole_space() { return whole_circle<FT>(); }
+  static s1::sub_hyperplane<FT> whole(s1::hyperplane<FT> const& h) { return s1::sub_hyperplane<FT>{h, true, true}; }
   /// The length of a cell (in double).
-  static auto measure(polytope const& c) { return s1::length(c); }
+  static auto measure(s1::polytope<FT> const& c) { return s1::length(c); }
 };
 
 /// Exact the circle S1.
