@@ -11,6 +11,7 @@
 
 #include <bsp/depth_order.hpp>
 #include <bsp/tree.hpp>
+#include <boost/pending/disjoint_sets.hpp>
 #include <geometry/e3.hpp>
 
 #include <array>
@@ -18,7 +19,6 @@
 #include <cmath>
 #include <functional>
 #include <stdexcept>
-#include <numeric>
 
 namespace svm {
 
@@ -401,13 +401,9 @@ template <geometry::number FT> void simplify(visibility_map<FT>& vm) {
   auto const& he = m.half_edges();
   auto const& faces = m.faces();
   std::size_t ne = he.size();
-  // Faces joined across removed edges (union–find).
-  std::vector<index> parent(faces.size());
-  std::iota(parent.begin(), parent.end(), index{0});
-  auto find = [&](index x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
+  // Faces joined across removed edges.
+  boost::disjoint_sets_with_storage<> joined(faces.size());
+  auto find = [&](index x) { return static_cast<index>(joined.find_set(x)); };
   std::vector<char> keep(ne, 0);
   for (index e = 0; e < ne; e += 2) {
     index a = he[e].face, b = he[e + 1].face;
@@ -415,8 +411,7 @@ template <geometry::number FT> void simplify(visibility_map<FT>& vm) {
     if (faces[a].label != faces[b].label || kept_cut) {
       keep[e] = keep[e + 1] = 1;
     } else {
-      index ra = find(a), rb = find(b);
-      if (ra != rb) parent[ra] = rb;
+      joined.union_set(a, b);
     }
   }
   // New indices: kept edges in pairs (keeping parity), vertices with a kept edge, face classes.

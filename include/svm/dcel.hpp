@@ -8,6 +8,8 @@
 
 #include <geometry/s2.hpp>
 
+#include <boost/pending/disjoint_sets.hpp>
+
 #include <cmath>
 #include <cstdint>
 #include <numbers>
@@ -399,15 +401,10 @@ template <geometry::number FT> std::vector<std::string> check_invariants(dcel<FT
     if (minor != (m.reversed(e) ? geometry::sign::negative : geometry::sign::positive)) bad("not a minor arc", e);
   }
   // Euler's formula.
-  std::vector<index> parent(m.vertices().size());
-  for (index i = 0; i < parent.size(); ++i) parent[i] = i;
-  auto find = [&](index x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
-  for (index e = 0; e < he.size(); e += 2) parent[find(he[e].origin)] = find(he[e + 1].origin);
+  boost::disjoint_sets_with_storage<> joined(m.vertices().size());
+  for (index e = 0; e < he.size(); e += 2) joined.union_set(he[e].origin, he[e + 1].origin);
   std::size_t components = 0;
-  for (index i = 0; i < parent.size(); ++i) components += find(i) == i;
+  for (index i = 0; i < m.vertices().size(); ++i) components += joined.find_set(i) == i;
   long lhs = static_cast<long>(m.vertices().size()) - static_cast<long>(he.size() / 2) + static_cast<long>(m.faces().size());
   if (lhs != 1 + static_cast<long>(components))
     problems.push_back("Euler: V - E + F = " + std::to_string(lhs) + ", 1 + C = " + std::to_string(1 + components));
