@@ -33,10 +33,9 @@ using depth_order_tree = tree<G, fragment_list<G, Id>, none>;
 
 /// Autopartition: every node's hyperplane supports one of the input pieces
 /// left in its cell (chosen by `policy`); pieces crossing it are split, pieces
-/// lying in it stay at the node.  A policy may also offer a free cut: when it
-/// has a member `cut<G>(pieces, piece)` returning `std::optional<G::hyperplane>`
-/// and that returns a hyperplane, the node uses it instead (see `balanced`).
-template <geometry G, class Id = std::size_t, class Policy = input_order>
+/// lying in it stay at the node.  A `bsp::cutting_policy` may answer with a
+/// free cut instead, which the node then uses (see `balanced`).
+template <geometry G, class Id = std::size_t, splitting_policy<G, fragment<G, Id>> Policy = input_order>
 depth_order_tree<G, Id> build_depth_order(fragment_list<G, Id> input, Policy policy = {}) {
   depth_order_tree<G, Id> t;
   struct work {
@@ -54,9 +53,8 @@ depth_order_tree<G, Id> build_depth_order(fragment_list<G, Id> input, Policy pol
       t.attach(w.parent, w.side, t.add_leaf());
       continue;
     }
-    std::optional<typename G::hyperplane> cut;
-    if constexpr (requires { policy.template cut<G>(w.pieces, piece); }) cut = policy.template cut<G>(w.pieces, piece);
-    typename G::hyperplane h = cut ? std::move(*cut) : G::supporting(w.pieces[policy.template choose<G>(w.pieces, piece)].piece);
+    auto d = decide<G>(policy, w.pieces, piece);
+    typename G::hyperplane h = d.cut ? std::move(*d.cut) : G::supporting(w.pieces[d.piece].piece);
     fragment_list<G, Id> here, neg, pos;
     for (auto& f : w.pieces) {
       auto r = G::split(f.piece, h);

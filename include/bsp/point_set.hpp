@@ -38,9 +38,9 @@ template <geometry G, label L = bool> using point_set = tree<G, none, L>;
 /// closed polygon mesh has them when its faces turn counter-clockwise seen from
 /// outside.  Cells behind a boundary piece get `inside`, the others `outside`.
 /// The boundary must be closed and consistently oriented; pieces may touch and
-/// share vertices, edges and faces.  A policy that offers free cuts (`cut`,
-/// as `balanced` does) keeps the tree shallow on convex surfaces.
-template <geometry G, label L = bool, class Policy = input_order>
+/// share vertices, edges and faces.  A `bsp::cutting_policy` that offers free
+/// cuts, as `balanced` does, keeps the tree shallow on convex surfaces.
+template <geometry G, label L = bool, splitting_policy<G> Policy = input_order>
 point_set<G, L> build_point_set(std::vector<typename G::sub_hyperplane> boundary, L inside = L(true),
                                 L outside = L(false), Policy policy = {}) {
   using S = typename G::sub_hyperplane;
@@ -63,28 +63,27 @@ point_set<G, L> build_point_set(std::vector<typename G::sub_hyperplane> boundary
     auto piece = [](S const& s) -> S const& { return s; };
     std::vector<S> neg, pos;
     std::optional<typename G::hyperplane> h;
-    // A free cut (a policy with `cut`, such as `balanced`) is taken only when
-    // it leaves pieces on both sides, so no leaf hangs under it: every leaf
-    // still lies just behind or in front of a boundary piece.  Pieces lying
-    // in the cut go to the side the region is on.
-    if constexpr (requires { policy.template cut<G>(w.pieces, piece); }) {
-      if (auto cut = policy.template cut<G>(w.pieces, piece)) {
-        for (auto const& s : w.pieces) {
-          auto r = G::split(s, *cut);
-          if (r.is_coincident())
-            (static_cast<int>(r.coincident) > 0 ? neg : pos).push_back(s);
-          if (r.negative) neg.push_back(std::move(*r.negative));
-          if (r.positive) pos.push_back(std::move(*r.positive));
-        }
-        if (!neg.empty() && !pos.empty())
-          h = std::move(*cut);
-        else
-          neg.clear(), pos.clear();
+    // A free cut (from a `bsp::cutting_policy` such as `balanced`) is taken
+    // only when it leaves pieces on both sides, so no leaf hangs under it:
+    // every leaf still lies just behind or in front of a boundary piece.
+    // Pieces lying in the cut go to the side the region is on.
+    auto d = decide<G>(policy, w.pieces, piece);
+    if (d.cut) {
+      for (auto const& s : w.pieces) {
+        auto r = G::split(s, *d.cut);
+        if (r.is_coincident())
+          (static_cast<int>(r.coincident) > 0 ? neg : pos).push_back(s);
+        if (r.negative) neg.push_back(std::move(*r.negative));
+        if (r.positive) pos.push_back(std::move(*r.positive));
       }
+      if (!neg.empty() && !pos.empty())
+        h = std::move(*d.cut);
+      else
+        neg.clear(), pos.clear();
     }
     bool free = h.has_value();
     if (!free) {
-      h = G::supporting(w.pieces[policy.template choose<G>(w.pieces, piece)]);
+      h = G::supporting(w.pieces[d.piece]);
       for (auto& s : w.pieces) {
         if (int side = detail::whole_side<G>(s, *h)) {
           (side < 0 ? neg : pos).push_back(std::move(s));

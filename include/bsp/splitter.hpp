@@ -2,10 +2,13 @@
 /// Splitter selection: which of the sub-hyperplanes left in a cell supplies
 /// the next node's hyperplane.  Policies are small function objects called as
 /// `policy.template choose<G>(items, piece)` with a vector of items and a
-/// function giving each item's sub-hyperplane; they return an index.
+/// function giving each item's sub-hyperplane; they return an index
+/// (`bsp::choosing_policy`).  A policy that may prefer a free hyperplane
+/// answers `decide` instead (`bsp::cutting_policy`).
 #pragma once
 
 #include "concepts/geometry.hpp"
+#include "concepts/policy.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -70,21 +73,11 @@ template <class Cutter> struct balanced {
   explicit balanced(Cutter c, std::uint64_t seed = 1, std::size_t threshold_ = 64)
       : cutter(std::move(c)), threshold(threshold_), rng(seed) {}
 
-  template <geometry G, class Item, class Piece> std::size_t choose(std::vector<Item> const& items, Piece&&) {
-    if (chosen != none_chosen && chosen < items.size()) {
-      std::size_t c = chosen;
-      chosen = none_chosen;
-      return c;
-    }
-    return std::uniform_int_distribution<std::size_t>(0, items.size() - 1)(rng);
-  }
-
   template <geometry G, class Item, class Piece>
-  std::optional<typename G::hyperplane> cut(std::vector<Item> const& items, Piece&& piece) {
-    chosen = none_chosen;
+  split_decision<typename G::hyperplane> decide(std::vector<Item> const& items, Piece&& piece) {
     std::size_t n = items.size();
-    if (n <= threshold) return std::nullopt;
     std::uniform_int_distribution<std::size_t> pick(0, n - 1);
+    if (n <= threshold) return {pick(rng), std::nullopt};
     std::size_t best_share = 0, best = 0;
     for (std::size_t t = 0; t < samples; ++t) {
       std::size_t c = pick(rng);
@@ -98,21 +91,14 @@ template <class Cutter> struct balanced {
       std::size_t share = neg < pos ? neg : pos;
       if (share > best_share || t == 0) best_share = share, best = c;
     }
-    if (best_share * min_share >= probe) {
-      chosen = best;
-      return std::nullopt;
-    }
-    return cutter(items);
+    if (best_share * min_share >= probe) return {best, std::nullopt};
+    return {best, cutter(items)};
   }
 
   Cutter cutter;
   std::size_t threshold;
   std::size_t samples = 4, probe = 32, min_share = 8;
   std::mt19937_64 rng;
-
-private:
-  static constexpr std::size_t none_chosen = ~std::size_t{0};
-  std::size_t chosen = none_chosen;
 };
 
 } // namespace bsp

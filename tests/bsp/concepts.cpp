@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 #include <type_traits>
+#include <vector>
 
 namespace {
 
@@ -38,6 +39,29 @@ static_assert(all_extensions<geometry::rational>());
 static_assert(bsp::measured_space<archetype::line> && !bsp::whole_side_geometry<archetype::line>);
 static_assert(bsp::partial_measure<std::optional<long>> && !bsp::partial_measure<double>);
 static_assert(bsp::measure_value<double> && !bsp::measure_value<std::string>);
+
+// Splitting policies: the three that choose a piece, and `balanced`, which
+// decides (a piece or a free cut) and does not choose.
+using E3 = geometry::e3::exact_kernel;
+using median_cut = bsp::balanced<geometry::e3::axis_median_cut<geometry::rational>>;
+static_assert(bsp::choosing_policy<bsp::input_order, E3> && bsp::choosing_policy<bsp::random_order, E3> &&
+              bsp::choosing_policy<bsp::least_splits, E3> && bsp::choosing_policy<bsp::random_order, archetype::line>);
+static_assert(bsp::cutting_policy<median_cut, E3> && !bsp::choosing_policy<median_cut, E3>);
+static_assert(bsp::splitting_policy<median_cut, E3> && bsp::splitting_policy<bsp::least_splits, E3> &&
+              bsp::splitting_policy<median_cut, E3, bsp::fragment<E3>>);
+static_assert(!bsp::cutting_policy<bsp::input_order, E3>);
+namespace {
+struct chooses_nothing { // `choose` of the wrong shape
+  template <class G, class Item, class Piece> void choose(std::vector<Item> const&, Piece&&) {}
+};
+struct decides_optional { // `decide` returning a bare hyperplane, not a decision
+  template <class G, class Item, class Piece> std::optional<typename G::hyperplane> decide(std::vector<Item> const&, Piece&&) {
+    return std::nullopt;
+  }
+};
+} // namespace
+static_assert(!bsp::splitting_policy<chooses_nothing, E3> && !bsp::splitting_policy<decides_optional, E3>);
+static_assert(!bsp::splitting_policy<int, E3>);
 static_assert(std::is_same_v<bsp::measure_t<geometry::e2::exact_kernel>, std::optional<geometry::rational>>);
 
 // Payloads: semiregular types only.

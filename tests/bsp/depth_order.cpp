@@ -150,6 +150,17 @@ TEST_CASE("E3 depth order on a convex surface: balanced cuts keep the tree shall
   std::cout << "convex surface of " << tris.size() << " triangles: depth " << dc << " (random order), " << ds << " (balanced)\n";
   CHECK(dc >= tris.size() / 2); // coplanar pairs share a node
   CHECK(ds * 8 <= dc);
+  // The policy's decisions: on the convex surface a free cut above the
+  // threshold, a piece only at or below it, and a valid piece either way.
+  auto piece = [](bsp::fragment<K3> const& f) -> K3::sub_hyperplane const& { return f.piece; };
+  bsp::balanced policy(e3::axis_median_cut<Q>{}, 3, 16);
+  auto many = bsp::decide<K3>(policy, input, piece);
+  CHECK(many.cut.has_value());
+  CHECK(many.piece < input.size());
+  bsp::fragment_list<K3> few(input.begin(), input.begin() + 16);
+  auto some = bsp::decide<K3>(policy, few, piece);
+  CHECK(!some.cut.has_value());
+  CHECK(some.piece < few.size());
   // Front to back from inside the cup, below it and beside it, checked along rays.
   int compared = 0;
   for (V3 e : {V3{Q(1, 3), Q(-2, 7), Q(400)}, V3{Q(5, 2), Q(3), Q(-50)}, V3{Q(30), Q(1), Q(100)}}) {
