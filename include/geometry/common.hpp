@@ -96,7 +96,7 @@ sign restricted_det_sign(hvec<FT, 3> const& p, std::size_t k, hvec<FT, 3> const&
         return flip ? -(v0 * B[1]) - v1 * B[0] : v0 * B[1] - v1 * B[0];
       },
       p, h, b);
-  return sign_of(p[k]) == sign::negative ? -s : s;
+  return p.sign_at(k) == sign::negative ? -s : s;
 }
 
 /// Sign of `det(a, b, restrict_to(p, k, h))` for bounds `a`, `b` (3
@@ -121,7 +121,7 @@ sign restricted_det_sign(hvec<FT, 4> const& p, std::size_t k, hvec<FT, 4> const&
         return flip ? c1 * r1 + c2 * r2 - c0 * r0 : c0 * r0 + c1 * r1 + c2 * r2;
       },
       p, h, a, b);
-  return sign_of(p[k]) == sign::negative ? -s : s;
+  return p.sign_at(k) == sign::negative ? -s : s;
 }
 
 /// The side of `h` on which a convex polygon of the plane `support`, bounded

@@ -128,42 +128,54 @@ template <std::size_t N> struct integer_vector {
   }
 };
 
-/// The exact coordinates of an `hvec` over an exact field.
-template <std::size_t N> struct exact_coordinates {
-  std::array<rational, N> c;
-  /// The primitive integer multiple of `c`: `c` times the least common
-  /// multiple of its denominators, divided by the greatest common divisor
-  /// of the results (a positive factor, so every projective sign is kept).
-  integer_vector<N> z;
-};
-
 /// The coordinates of a vector and of its opposite, kept once and shared by
-/// every copy of either (they are never changed after construction).  The
-/// opposite's numbers are made the first time they are asked for, so
-/// turning a vector round (`-v`) costs no number at all.
+/// every copy of either (they are never changed after construction).  A
+/// vector always has its *integer* coordinates: the primitive integer
+/// multiple of its rational coordinates (their least common denominator
+/// times them, divided by the greatest common divisor of the results: a
+/// positive factor, so every projective sign is kept), which is what the
+/// exact predicates read.  A vector made from integers (a construction on
+/// integer coordinates, see `hvec::from_integers`) has as rational
+/// coordinates those integers, made the first time they are asked for.  The
+/// opposite's numbers too are made when first asked for, so turning a vector
+/// round (`-v`) costs no number at all.
 template <std::size_t N> class exact_pair {
 public:
-  exact_pair() = default;
-  explicit exact_pair(exact_coordinates<N> p) : positive_(std::move(p)) {}
+  exact_pair() : c_(std::array<rational, N>{}) {}
+  exact_pair(std::array<rational, N> c, integer_vector<N> z) : z_(std::move(z)), c_(std::move(c)) {}
+  explicit exact_pair(integer_vector<N> z) : z_(std::move(z)) {}
 
-  exact_coordinates<N> const& get(bool negated) const {
-    if (!negated) return positive_;
-    std::call_once(once_, [this] {
-      exact_coordinates<N> m;
-      for (std::size_t i = 0; i < N; ++i) m.c[i] = -positive_.c[i];
-      m.z = -positive_.z;
-      negative_ = std::move(m);
+  integer_vector<N> const& integers(bool negated) const {
+    if (!negated) return z_;
+    std::call_once(negative_z_once_, [this] { negative_z_ = -z_; });
+    return *negative_z_;
+  }
+
+  std::array<rational, N> const& rationals(bool negated) const {
+    std::call_once(c_once_, [this] {
+      if (c_) return;
+      std::array<rational, N> c;
+      for (std::size_t i = 0; i < N; ++i) mpq_set_z(c[i].backend().data(), z_.z[i].backend().data());
+      c_ = std::move(c);
     });
-    return *negative_;
+    if (!negated) return *c_;
+    std::call_once(negative_c_once_, [this] {
+      std::array<rational, N> m;
+      for (std::size_t i = 0; i < N; ++i) m[i] = -(*c_)[i];
+      negative_c_ = std::move(m);
+    });
+    return *negative_c_;
   }
 
 private:
-  exact_coordinates<N> positive_;
-  mutable std::once_flag once_;
-  mutable std::optional<exact_coordinates<N>> negative_;
+  integer_vector<N> z_;
+  mutable std::optional<std::array<rational, N>> c_;
+  mutable std::optional<integer_vector<N>> negative_z_;
+  mutable std::optional<std::array<rational, N>> negative_c_;
+  mutable std::once_flag c_once_, negative_z_once_, negative_c_once_;
 };
 
-/// The primitive integer multiple of `c` (see `exact_coordinates::z`).
+/// The primitive integer multiple of `c` (see `exact_pair`).
 template <std::size_t N> std::array<integer, N> integer_multiple(std::array<rational, N> const& c) {
   integer scale(1);
   for (auto const& x : c) {
@@ -313,6 +325,69 @@ template <class F, std::size_t... N> sign integer_sign(F const& f, std::array<in
   return integer_sign(f, integer_vector<N>(a)...);
 }
 
+/// `v` as a GMP integer.
+inline void set_integer(integer& z, int128 v) {
+  if (v >= std::numeric_limits<std::int64_t>::min() && v <= std::numeric_limits<std::int64_t>::max()) {
+    mpz_set_si(z.backend().data(), static_cast<long>(v));
+    return;
+  }
+  uint128 m = v < 0 ? -static_cast<uint128>(v) : static_cast<uint128>(v);
+  std::array<std::uint64_t, 2> limbs{static_cast<std::uint64_t>(m), static_cast<std::uint64_t>(m >> 64)};
+  mpz_import(z.backend().data(), 2, -1, sizeof(std::uint64_t), 0, 0, limbs.data());
+  if (v < 0) mpz_neg(z.backend().data(), z.backend().data());
+}
+
+/// The greatest common divisor of two 128-bit numbers (binary: no division).
+inline uint128 gcd(uint128 a, uint128 b) noexcept {
+  auto ctz = [](uint128 x) {
+    auto lo = static_cast<std::uint64_t>(x);
+    return lo ? __builtin_ctzll(lo) : 64 + __builtin_ctzll(static_cast<std::uint64_t>(x >> 64));
+  };
+  if (a == 0) return b;
+  if (b == 0) return a;
+  int shift = std::min(ctz(a), ctz(b));
+  a >>= ctz(a);
+  while (b != 0) {
+    b >>= ctz(b);
+    if (a > b) std::swap(a, b);
+    b -= a;
+  }
+  return a << shift;
+}
+
+/// Divides `z` by the greatest common divisor of its entries (when not 0).
+template <std::size_t M> void make_primitive(std::array<integer, M>& z) {
+  integer g(0);
+  for (auto const& x : z) mpz_gcd(g.backend().data(), g.backend().data(), x.backend().data());
+  if (mpz_cmp_ui(g.backend().data(), 1) > 0)
+    for (auto& x : z) mpz_divexact(x.backend().data(), x.backend().data(), g.backend().data());
+}
+
+/// The primitive integer vector of the values of `f` on integer vectors:
+/// `f` is a polynomial map written over `std::array<T, N>` arguments with
+/// `+ − ×` only, returning a `std::array<T, M>`.  It is evaluated on the
+/// first rung that holds every intermediate value (the bound comes from `f`
+/// itself, evaluated on bit counts): 128-bit integers, else GMP integers.
+template <std::size_t M, class F, std::size_t... N>
+integer_vector<M> integer_construction(F const& f, integer_vector<N> const&... a) {
+  std::array<bits_counter, M> const bound = f(bits_of(a)...);
+  int bits = 0;
+  for (auto b : bound) bits = std::max(bits, b.b);
+  std::array<integer, M> z;
+  if (bits <= int128_bits && (a.small() && ...) && filter_config().fixed_width) {
+    std::array<int128, M> r = f(to_int128(a)...);
+    uint128 g = 0;
+    for (auto x : r) g = gcd(g, x < 0 ? -static_cast<uint128>(x) : static_cast<uint128>(x));
+    if (g > 1)
+      for (auto& x : r) x /= static_cast<int128>(g);
+    for (std::size_t i = 0; i < M; ++i) set_integer(z[i], r[i]);
+  } else {
+    z = f(a.z...);
+    make_primitive(z);
+  }
+  return integer_vector<M>(std::move(z));
+}
+
 /// Counts the filter's roundings of an expression at compile time.
 struct depth_counter {
   int d = 2; ///< an input: its conversion to double
@@ -344,16 +419,49 @@ public:
     if constexpr (is_exact) {
       auto z = detail::integer_multiple(c);
       detail::approximate(z, a_);
-      s_ = std::make_shared<shared const>(detail::exact_coordinates<N>{std::move(c), detail::integer_vector<N>(std::move(z))});
+      s_ = std::make_shared<shared const>(std::move(c), detail::integer_vector<N>(std::move(z)));
     } else {
       c_ = std::move(c);
+    }
+  }
+
+  /// The vector whose integer coordinates are `z` (exact fields only): a
+  /// construction's result, computed on integer coordinates, for objects that
+  /// mean the same up to a positive factor (hyperplanes, directions,
+  /// homogeneous points).  Its rational coordinates are those integers.
+  static hvec from_integers(detail::integer_vector<N> z)
+    requires is_exact
+  {
+    hvec r;
+    detail::approximate(z.z, r.a_);
+    r.s_ = std::make_shared<shared const>(std::move(z));
+    return r;
+  }
+
+  /// The sign of coordinate `i`, read without making rationals.
+  sign sign_at(std::size_t i) const {
+    if constexpr (is_exact) {
+      int s = mpz_sgn(s_->integers(false).z[i].backend().data());
+      return static_cast<sign>(negated_ ? -s : s);
+    } else {
+      return sign_of(c_[i]);
+    }
+  }
+  /// Whether `|v[i]| > |v[j]|`, read without making rationals.
+  bool abs_greater(std::size_t i, std::size_t j) const {
+    if constexpr (is_exact) {
+      auto const& z = s_->integers(false).z;
+      return mpz_cmpabs(z[i].backend().data(), z[j].backend().data()) > 0;
+    } else {
+      using std::abs;
+      return abs(c_[i]) > abs(c_[j]);
     }
   }
 
   FT const& operator[](std::size_t i) const { return exact()[i]; }
   std::array<FT, N> const& exact() const {
     if constexpr (is_exact)
-      return s_->get(negated_).c;
+      return s_->rationals(negated_);
     else
       return c_;
   }
@@ -369,13 +477,13 @@ public:
   std::array<integer, N> const& integers() const
     requires is_exact
   {
-    return s_->get(negated_).z.z;
+    return s_->integers(negated_).z;
   }
   /// The same, with its bit length, as the exact stages read it.
   detail::integer_vector<N> const& integer_view() const
     requires is_exact
   {
-    return s_->get(negated_).z;
+    return s_->integers(negated_);
   }
 
   /// The opposite vector; over an exact field it shares this one's numbers.
@@ -395,10 +503,15 @@ public:
     return std::all_of(c.begin(), c.end(), [](FT const& x) { return sign_of(x) == sign::zero; });
   }
 
+  /// Over an exact field: the same vector up to a positive factor (the same
+  /// primitive integer coordinates), as every homogeneous object means it.
   friend bool operator==(hvec const& a, hvec const& b) {
-    if constexpr (is_exact)
+    if constexpr (is_exact) {
       if (a.s_ == b.s_ && a.negated_ == b.negated_) return true;
-    return a.exact() == b.exact();
+      return a.integer_view().z == b.integer_view().z;
+    } else {
+      return a.c_ == b.c_;
+    }
   }
 
 private:

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstddef>
+#include <type_traits>
 
 namespace geometry {
 
@@ -62,17 +63,32 @@ template <number FT, std::size_t N> sign parallel(hvec<FT, N> const& a, hvec<FT,
 /// @name Exact constructions on homogeneous vectors
 /// @{
 
+/// The vector of the values of `f` on `v...`, for a result that means the
+/// same up to a positive factor (a hyperplane, a direction, a homogeneous
+/// point): `f` is a polynomial map over `std::array<T, N>` arguments with
+/// `+ − ×` only, homogeneous in each argument, returning a
+/// `std::array<T, M>`.  Over an exact field it is evaluated on the
+/// arguments' integer coordinates (positive multiples of theirs, so the
+/// result is a positive multiple of the true one), in 128-bit integers when
+/// the bound allows and in GMP integers otherwise, never in rationals; over
+/// `double`, on the doubles.
+template <std::size_t M, class F, number FT, std::size_t... N> hvec<FT, M> construct(F const& f, hvec<FT, N> const&... v) {
+  if constexpr (exact_field<FT>)
+    return hvec<FT, M>::from_integers(detail::integer_construction<M>(f, v.integer_view()...));
+  else
+    return hvec<FT, M>(f(v.exact()...));
+}
+
 template <number FT> hvec<FT, 3> cross(hvec<FT, 3> const& a, hvec<FT, 3> const& b) {
-  return hvec<FT, 3>(cross(a.exact(), b.exact()));
+  return construct<3>([](auto const& x, auto const& y) { return cross(x, y); }, a, b);
 }
 
 /// The coordinate eliminated when restricting to the hyperplane `p`: the one
 /// where `|p[k]|` is largest, so that the restriction is well conditioned.
 template <number FT, std::size_t N> std::size_t dominant_axis(hvec<FT, N> const& p) {
-  using std::abs;
   std::size_t k = 0;
   for (std::size_t i = 1; i < N; ++i)
-    if (abs(p[i]) > abs(p[k])) k = i;
+    if (p.abs_greater(i, k)) k = i;
   return k;
 }
 
@@ -82,7 +98,7 @@ namespace detail {
 /// `p`, `det(drop(v₁), …) ` has the sign of `det(p, v₁, …)` — counter-clockwise
 /// in restricted coordinates is counter-clockwise seen from `p`'s positive side.
 template <number FT, std::size_t N> bool restriction_flips(hvec<FT, N> const& p, std::size_t k) {
-  return (sign_of(p[k]) == sign::negative) != (k % 2 == 1);
+  return (p.sign_at(k) == sign::negative) != (k % 2 == 1);
 }
 } // namespace detail
 
@@ -94,24 +110,33 @@ template <number FT, std::size_t N> bool restriction_flips(hvec<FT, N> const& p,
 /// predicate of bounded degree.
 template <number FT, std::size_t N>
 hvec<FT, N - 1> restrict_to(hvec<FT, N> const& p, std::size_t k, hvec<FT, N> const& b) {
-  std::array<FT, N - 1> r;
-  bool neg = sign_of(p[k]) == sign::negative;
-  for (std::size_t i = 0, j = 0; i < N; ++i) {
-    if (i == k) continue;
-    FT v = p[k] * b[i] - b[k] * p[i];
-    r[j++] = neg ? FT(-v) : v;
-  }
-  if (detail::restriction_flips(p, k)) r[0] = -r[0];
-  return hvec<FT, N - 1>(std::move(r));
+  bool neg = p.sign_at(k) == sign::negative, flip = detail::restriction_flips(p, k);
+  return construct<N - 1>(
+      [k, neg, flip](auto const& P, auto const& B) {
+        std::array<std::remove_cvref_t<decltype(P[0])>, N - 1> r;
+        for (std::size_t i = 0, j = 0; i < N; ++i) {
+          if (i == k) continue;
+          auto v = P[k] * B[i] - B[k] * P[i];
+          r[j++] = neg ? -v : v;
+        }
+        if (flip) r[0] = -r[0];
+        return r;
+      },
+      p, b);
 }
 
 /// The restricted coordinates of a point `x` on the hyperplane `p` (see `restrict_to`).
 template <number FT, std::size_t N> hvec<FT, N - 1> drop(hvec<FT, N> const& p, std::size_t k, hvec<FT, N> const& x) {
-  std::array<FT, N - 1> r;
-  for (std::size_t i = 0, j = 0; i < N; ++i)
-    if (i != k) r[j++] = x[i];
-  if (detail::restriction_flips(p, k)) r[0] = -r[0];
-  return hvec<FT, N - 1>(std::move(r));
+  bool flip = detail::restriction_flips(p, k);
+  return construct<N - 1>(
+      [k, flip](auto const& X) {
+        std::array<std::remove_cvref_t<decltype(X[0])>, N - 1> r;
+        for (std::size_t i = 0, j = 0; i < N; ++i)
+          if (i != k) r[j++] = X[i];
+        if (flip) r[0] = -r[0];
+        return r;
+      },
+      x);
 }
 
 /// The point of the hyperplane `p` whose restricted coordinates are `x`: the
@@ -136,9 +161,13 @@ hvec<FT, N> lift(hvec<FT, N> const& p, std::size_t k, std::array<FT, N - 1> x) {
 /// A restricted vector seen from the opposite hyperplane `-p`: its first
 /// coordinate changes sign (see `restrict_to`).
 template <number FT, std::size_t M> hvec<FT, M> mirror(hvec<FT, M> const& r) {
-  auto c = r.exact();
-  c[0] = -c[0];
-  return hvec<FT, M>(std::move(c));
+  return construct<M>(
+      [](auto const& X) {
+        auto c = X;
+        c[0] = -c[0];
+        return c;
+      },
+      r);
 }
 
 /// @}

@@ -19,6 +19,7 @@
 #include <cmath>
 #include <functional>
 #include <stdexcept>
+#include <type_traits>
 
 namespace svm {
 
@@ -105,19 +106,20 @@ template <geometry::number FT>
 std::vector<sphere_bound<FT>> project(geometry::e3::sub_hyperplane<FT> const& f, geometry::e3::point<FT> const& eye) {
   auto const& P = f.support.n;
   auto const& o = eye.homogeneous();
-  FT po = geometry::dot(P.exact(), o.exact());
-  bool flip = geometry::sign_of(po) == geometry::sign::negative;
-  std::vector<sphere_bound<FT>> out;
-  for (auto const& b : f.bounds) {
-    auto const& B = b.original.n;
-    FT bo = geometry::dot(B.exact(), o.exact());
-    std::array<FT, 3> n;
+  bool flip = geometry::dot_sign(P, o) == geometry::sign::negative;
+  auto circle = [flip](auto const& P, auto const& B, auto const& O) {
+    auto po = geometry::dot(P, O), bo = geometry::dot(B, O);
+    std::array<std::remove_cvref_t<decltype(P[0])>, 3> n;
     for (std::size_t i = 0; i < 3; ++i) {
-      FT q = po * B[i] - bo * P[i];
-      n[i] = flip ? FT(-q) : q;
+      auto q = po * B[i] - bo * P[i];
+      n[i] = flip ? -q : q;
     }
-    out.push_back({geometry::s2::hyperplane<FT>(geometry::hvec<FT, 3>(n), b.original.tag), true});
-  }
+    return n;
+  };
+  std::vector<sphere_bound<FT>> out;
+  out.reserve(f.bounds.size());
+  for (auto const& b : f.bounds)
+    out.push_back({geometry::s2::hyperplane<FT>(geometry::construct<3>(circle, P, b.original.n, o), b.original.tag), true});
   // Counter-clockwise seen from outside the sphere: det(c₀, c₁, c₂) > 0.
   if (out.size() >= 3 && det_sign(out[0].c.n, out[1].c.n, out[2].c.n) == geometry::sign::negative)
     std::reverse(out.begin(), out.end());
@@ -283,20 +285,21 @@ visibility_map<FT> build(std::vector<polygon<FT>> const& polygons, geometry::e3:
       stack.pop_back();
       if (!v.is_leaf(w.n)) {
         auto const& g = v.splitter(w.n);
-        detail::sphere_bound<FT> hp{g, false}, hn{g.opposite(), false};
-        auto r = geometry::detail::split_polygon(w.frag, hp, hn, &signs);
-        if (r.negative && r.positive) {
+        int where = geometry::detail::polygon_side(w.frag, g.n, signs);
+        if (where == 0) {
+          detail::sphere_bound<FT> hp{g, false}, hn{g.opposite(), false};
+          auto r = geometry::detail::split_polygon_across(w.frag, hp, hn, signs);
           stack.push_back({v.negative(w.n), w.n, -1, std::move(*r.negative)});
           stack.push_back({v.positive(w.n), w.n, +1, std::move(*r.positive)});
           continue;
         }
-        // Not split: an edge lying in g is in V already (the paper's flag reset).
-        auto& part = r.negative ? *r.negative : *r.positive;
-        std::size_t k = part.size();
+        // Not split, so passed on whole: an edge lying in g is in V already
+        // (the paper's flag reset).
+        std::size_t k = w.frag.size();
         if (signs.size() == k)
           for (std::size_t i = 0; i < k; ++i)
-            if (signs[i] == sign::zero && signs[(i + k - 1) % k] == sign::zero) part[i].flag = false;
-        stack.push_back({r.negative ? v.negative(w.n) : v.positive(w.n), w.n, r.negative ? -1 : +1, std::move(part)});
+            if (signs[i] == sign::zero && signs[(i + k - 1) % k] == sign::zero) w.frag[i].flag = false;
+        stack.push_back({where < 0 ? v.negative(w.n) : v.positive(w.n), w.n, where, std::move(w.frag)});
         continue;
       }
       index f = v.leaf_data(w.n);

@@ -76,22 +76,19 @@ template <number FT> sign pencil_coefficient(hvec<FT, 3> const& a, hvec<FT, 3> c
   return filtered_sign([](auto const& x, auto const& y, auto const& z) { return dot(x, x) * dot(z, y) - dot(x, y) * dot(z, x); }, a, b, h);
 }
 
-/// `signs`, when given, receives the sides of the vertices (for two bounds or more).
-template <class Bound>
-region_split<Bound> split_polygon(std::vector<Bound> const& poly, Bound const& hp, Bound const& hn,
-                                  std::vector<sign>* signs = nullptr) {
-  auto const& h = hp.line();
+/// Where the polygon `poly` lies with respect to the hyperplane `h`: −1 or +1
+/// when wholly on that side (touching allowed, as `split_polygon` would put
+/// it), 0 when `h` cuts it in two.  `s` receives the sides of the vertices
+/// (for two bounds or more; else it is emptied).  Constructs nothing.
+template <class Bound, class Line> int polygon_side(std::vector<Bound> const& poly, Line const& h, std::vector<sign>& s) {
   std::size_t const k = poly.size();
-  if (signs) signs->clear();
-  if (k == 0) return {std::vector<Bound>{hn}, std::vector<Bound>{hp}};
+  s.clear();
+  if (k == 0) return 0;
   if (k == 1) {
-    auto const& b = poly[0];
-    sign par = parallel(b.line(), h);
-    if (par == sign::positive) return only_positive(poly);
-    if (par == sign::negative) return only_negative(poly);
-    return {std::vector<Bound>{b, hn}, std::vector<Bound>{b, hp}};
+    sign par = parallel(poly[0].line(), h);
+    return par == sign::positive ? 1 : par == sign::negative ? -1 : 0;
   }
-  std::vector<sign> s(k);
+  s.resize(k);
   bool any_pos = false, any_neg = false;
   for (std::size_t i = 0; i < k; ++i) {
     // A lune's two vertices are antipodal: one evaluation decides both, so
@@ -100,23 +97,39 @@ region_split<Bound> split_polygon(std::vector<Bound> const& poly, Bound const& h
     any_pos = any_pos || s[i] == sign::positive;
     any_neg = any_neg || s[i] == sign::negative;
   }
-  if (signs) *signs = s;
   if (!any_pos && !any_neg) {
     // Only a lune can have every vertex on h: then h is in the pencil of its bounds.
+    sign beta = pencil_coefficient(poly[0].line(), poly[1].line(), h);
+    sign alpha = pencil_coefficient(poly[1].line(), poly[0].line(), h);
+    if (alpha != sign::negative && beta != sign::negative) return 1;
+    if (alpha != sign::positive && beta != sign::positive) return -1;
+    return 0;
+  }
+  return !any_neg ? 1 : !any_pos ? -1 : 0;
+}
+
+/// The two parts of `poly` cut by `hp` (and its opposite `hn`), when
+/// `polygon_side(poly, hp.line(), s)` has given 0 and the signs `s`.
+template <class Bound>
+region_split<Bound> split_polygon_across(std::vector<Bound> const& poly, Bound const& hp, Bound const& hn,
+                                         std::vector<sign> const& s) {
+  std::size_t const k = poly.size();
+  if (k == 0) return {std::vector<Bound>{hn}, std::vector<Bound>{hp}};
+  if (k == 1) return {std::vector<Bound>{poly[0], hn}, std::vector<Bound>{poly[0], hp}};
+  bool all_on = true;
+  for (sign x : s) all_on = all_on && x == sign::zero;
+  if (all_on) {
+    // A lune whose vertices lie on h, cut along its length.
     auto const &a = poly[0], &b = poly[1];
-    sign beta = pencil_coefficient(a.line(), b.line(), h);
-    sign alpha = pencil_coefficient(b.line(), a.line(), h);
-    if (alpha != sign::negative && beta != sign::negative) return only_positive(poly);
-    if (alpha != sign::positive && beta != sign::positive) return only_negative(poly);
-    if (alpha == sign::positive) return {std::vector<Bound>{a, hn}, std::vector<Bound>{b, hp}};
+    if (pencil_coefficient(b.line(), a.line(), hp.line()) == sign::positive)
+      return {std::vector<Bound>{a, hn}, std::vector<Bound>{b, hp}};
     return {std::vector<Bound>{b, hn}, std::vector<Bound>{a, hp}};
   }
-  if (!any_neg) return only_positive(poly);
-  if (!any_pos) return only_negative(poly);
   // Sutherland–Hodgman on bounds: keep every edge with a point strictly on the
   // kept side, and put h where the boundary leaves that side.
   auto clip = [&](sign keep, Bound const& hb) {
     std::vector<Bound> out;
+    out.reserve(k + 1);
     for (std::size_t i = 0; i < k; ++i) {
       sign prev = s[(i + k - 1) % k] * keep, cur = s[i] * keep, next = s[(i + 1) % k] * keep;
       if (prev != sign::positive && cur != sign::positive) continue;
@@ -126,6 +139,19 @@ region_split<Bound> split_polygon(std::vector<Bound> const& poly, Bound const& h
     return out;
   };
   return {clip(sign::negative, hn), clip(sign::positive, hp)};
+}
+
+/// The parts of `poly` on either side of `hp` (`hn` is its opposite).
+/// `signs`, when given, receives the sides of the vertices (for two bounds or more).
+template <class Bound>
+region_split<Bound> split_polygon(std::vector<Bound> const& poly, Bound const& hp, Bound const& hn,
+                                  std::vector<sign>* signs = nullptr) {
+  std::vector<sign> local;
+  std::vector<sign>& s = signs ? *signs : local;
+  int side = polygon_side(poly, hp.line(), s);
+  if (side > 0) return only_positive(poly);
+  if (side < 0) return only_negative(poly);
+  return split_polygon_across(poly, hp, hn, s);
 }
 
 /// @}
