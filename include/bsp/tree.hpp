@@ -78,6 +78,9 @@ public:
   NodeData const& node_data(node_id n) const { return in(n).data; }
   LeafData& leaf_data(node_id n) { return leaves_[leaf_index(n)].data; }
   LeafData const& leaf_data(node_id n) const { return leaves_[leaf_index(n)].data; }
+  /// How many interior nodes were added, reachable or not: each of
+  /// `node_id::interior(0)` to `node_id::interior(interior_count() - 1)`.
+  std::size_t interior_count() const noexcept { return interiors_.size(); }
   /// @}
 
   /// @name Building

@@ -16,6 +16,7 @@
 
 #include <array>
 #include <chrono>
+#include <deque>
 #include <cmath>
 #include <functional>
 #include <stdexcept>
@@ -89,21 +90,27 @@ namespace detail {
 /// The tag of an edge plane of polygon i (the high bit marks scene edges).
 inline constexpr geometry::hyperplane_tag edge_tag_bit = 0x80000000u;
 
-/// A bound of a fragment on the sphere: a circle, the table circle once it is
-/// in T's table, and the paper's flag — true while the edge may still add a
-/// node to V.
+/// The circles of one build, each stored once where it stays put (a deque
+/// never moves its elements): fragments and their pieces refer to them.
+template <geometry::number FT> using circle_store = std::deque<geometry::s2::hyperplane<FT>>;
+
+/// A bound of a fragment on the sphere: its circle, in a `circle_store`, and
+/// the paper's flag — true while the edge may still add a node to V.
+/// Splitting a fragment copies these, never a number.
 template <geometry::number FT> struct sphere_bound {
-  geometry::s2::hyperplane<FT> c;
+  geometry::s2::hyperplane<FT> const* c;
   bool flag = true;
-  geometry::hvec<FT, 3> const& line() const noexcept { return c.n; }
+  geometry::hvec<FT, 3> const& line() const noexcept { return c->n; }
 };
 
 /// The fragment of an E3 polygon as seen from the eye: each bound B of the
 /// polygon (in the plane P) becomes the circle of the plane through the eye
 /// and the line P ∩ B: `P(O)·B − B(O)·P`, whose normal has degree
 /// deg P + deg B + 1 in the input — bounded, whatever the depth of the trees.
+/// The circles go to `store`.
 template <geometry::number FT>
-std::vector<sphere_bound<FT>> project(geometry::e3::sub_hyperplane<FT> const& f, geometry::e3::point<FT> const& eye) {
+std::vector<sphere_bound<FT>> project(geometry::e3::sub_hyperplane<FT> const& f, geometry::e3::point<FT> const& eye,
+                                      circle_store<FT>& store) {
   auto const& P = f.support.n;
   auto const& o = eye.homogeneous();
   bool flip = geometry::dot_sign(P, o) == geometry::sign::negative;
@@ -119,9 +126,9 @@ std::vector<sphere_bound<FT>> project(geometry::e3::sub_hyperplane<FT> const& f,
   std::vector<sphere_bound<FT>> out;
   out.reserve(f.bounds.size());
   for (auto const& b : f.bounds)
-    out.push_back({geometry::s2::hyperplane<FT>(geometry::construct<3>(circle, P, b.original.n, o), b.original.tag), true});
+    out.push_back({&store.emplace_back(geometry::construct<3>(circle, P, b.original.n, o), b.original.tag), true});
   // Counter-clockwise seen from outside the sphere: det(c₀, c₁, c₂) > 0.
-  if (out.size() >= 3 && det_sign(out[0].c.n, out[1].c.n, out[2].c.n) == geometry::sign::negative)
+  if (out.size() >= 3 && det_sign(out[0].c->n, out[1].c->n, out[2].c->n) == geometry::sign::negative)
     std::reverse(out.begin(), out.end());
   return out;
 }
@@ -273,21 +280,33 @@ visibility_map<FT> build(std::vector<polygon<FT>> const& polygons, geometry::e3:
   };
   std::vector<work> stack;
   std::vector<sign> signs;
+  // Circles: those of V's nodes, each with its opposite, for as long as the
+  // build runs, and those of the fragment being inserted.
+  detail::circle_store<FT> node_circles, fragment_circles;
+  std::vector<std::array<s2::hyperplane<FT> const*, 2>> v_circles; // V's interior node i: its circle and the opposite
+  auto keep_circle = [&](bsp::node_id node, s2::hyperplane<FT> const& c) {
+    if (v_circles.size() <= node.index()) v_circles.resize(node.index() + 1);
+    auto const* pos = &node_circles.emplace_back(c);
+    v_circles[node.index()] = {pos, &node_circles.emplace_back(c.opposite())};
+  };
+  for (std::uint32_t i = 0; i < v.interior_count(); ++i)
+    keep_circle(bsp::node_id::interior(i), v.splitter(bsp::node_id::interior(i)));
   bsp::for_each_front_to_back(tree, eye, [&](auto const& fr) {
     ++st.fragments;
     if (options.progress && st.fragments >= next_report) {
       options.progress(static_cast<double>(st.fragments - 1) / static_cast<double>(total));
       next_report = st.fragments + total / 100 + 1;
     }
-    stack.push_back({v.root(), bsp::node_id{}, 0, detail::project(fr.piece, eye)});
+    fragment_circles.clear();
+    stack.push_back({v.root(), bsp::node_id{}, 0, detail::project(fr.piece, eye, fragment_circles)});
     while (!stack.empty()) {
       work w = std::move(stack.back());
       stack.pop_back();
       if (!v.is_leaf(w.n)) {
-        auto const& g = v.splitter(w.n);
-        int where = geometry::detail::polygon_side(w.frag, g.n, signs);
+        auto const& g = v_circles[w.n.index()];
+        int where = geometry::detail::polygon_side(w.frag, g[0]->n, signs);
         if (where == 0) {
-          detail::sphere_bound<FT> hp{g, false}, hn{g.opposite(), false};
+          detail::sphere_bound<FT> hp{g[0], false}, hn{g[1], false};
           auto r = geometry::detail::split_polygon_across(w.frag, hp, hn, signs);
           stack.push_back({v.negative(w.n), w.n, -1, std::move(*r.negative)});
           stack.push_back({v.positive(w.n), w.n, +1, std::move(*r.positive)});
@@ -311,11 +330,12 @@ visibility_map<FT> build(std::vector<polygon<FT>> const& polygons, geometry::e3:
       bsp::node_id parent = w.parent;
       int side = w.side;
       for (auto const& b : w.frag) {
-        if (!b.flag || !detail::cuts(m, f, b.c)) continue;
-        index c = m.add_circle(b.c, detail::provenance_of(b.c));
+        if (!b.flag || !detail::cuts(m, f, *b.c)) continue;
+        index c = m.add_circle(*b.c, detail::provenance_of(*b.c));
         index g = m.faces()[f].edge == none ? m.make_first_circle(c) : m.split_face(f, c);
         bsp::node_id neg = v.add_leaf(g), pos = v.add_leaf(f);
-        bsp::node_id node = v.add_interior(b.c, neg, pos);
+        bsp::node_id node = v.add_interior(*b.c, neg, pos);
+        keep_circle(node, *b.c);
         v.attach(parent, side, node);
         parent = node;
         side = +1;
