@@ -100,6 +100,7 @@ struct no_approximation {
 /// The filter's view of an exact vector: the doubles of its integer multiple.
 template <std::size_t N> struct approximation {
   std::array<double, N> v{};
+  double norm = 0;      ///< the largest |v[i]| (NaN when one is)
   bool integral = true; ///< every double is its integer exactly
   friend bool operator==(approximation const&, approximation const&) = default;
 };
@@ -209,6 +210,8 @@ template <std::size_t N> void approximate(std::array<integer, N> const& z, appro
     a.v[i] = mpz_get_d(num); // truncates: relative error below 2u
     a.integral = a.integral && bits <= 53;
   }
+  a.norm = 0;
+  for (double x : a.v) a.norm = std::isnan(x) ? x : std::max(a.norm, std::fabs(x));
 }
 
 __extension__ using int128 = __int128; ///< exact when no value exceeds 2^126
@@ -580,6 +583,82 @@ struct stage_result {
   sign s;
   sfloat r;
 };
+
+/// The degree of an expression in each of its `K` arguments.
+template <std::size_t K> struct degree_counter {
+  std::array<int, K> d{};
+};
+template <std::size_t K> constexpr degree_counter<K> operator+(degree_counter<K> a, degree_counter<K> b) {
+  for (std::size_t i = 0; i < K; ++i) a.d[i] = std::max(a.d[i], b.d[i]);
+  return a;
+}
+template <std::size_t K> constexpr degree_counter<K> operator-(degree_counter<K> a, degree_counter<K> b) { return a + b; }
+template <std::size_t K> constexpr degree_counter<K> operator*(degree_counter<K> a, degree_counter<K> b) {
+  for (std::size_t i = 0; i < K; ++i) a.d[i] += b.d[i];
+  return a;
+}
+template <std::size_t K> constexpr degree_counter<K> operator-(degree_counter<K> a) { return a; }
+
+/// The polynomial on absolute values at all-ones inputs: `+` and `−` add, `×` multiplies.
+struct weight_counter {
+  double c = 1;
+};
+constexpr weight_counter operator+(weight_counter a, weight_counter b) { return {a.c + b.c}; }
+constexpr weight_counter operator-(weight_counter a, weight_counter b) { return {a.c + b.c}; }
+constexpr weight_counter operator*(weight_counter a, weight_counter b) { return {a.c * b.c}; }
+constexpr weight_counter operator-(weight_counter a) { return a; }
+
+/// What the static stage needs of a polynomial `F` (a lambda without
+/// captures) of vectors of sizes `N...`: its degree in each argument, the
+/// weight `C` of its polynomial on absolute values (its value at all-ones
+/// inputs) and its depth of roundings.  Since that polynomial has
+/// non-negative coefficients, on inputs no larger than the norms `nᵢ` it is
+/// at most `C · Π nᵢ^degᵢ`.
+template <std::size_t K> struct static_constants {
+  std::array<int, K> degree{};
+  double weight = 0;
+  int depth = 0;
+};
+template <class F, std::size_t... N, std::size_t... I>
+constexpr static_constants<sizeof...(N)> static_constants_of(std::index_sequence<I...>) {
+  constexpr std::size_t K = sizeof...(N);
+  auto unit = [](std::size_t i) {
+    degree_counter<K> e;
+    e.d[i] = 1;
+    return e;
+  };
+  auto filled = []<std::size_t M, class T>(T x) {
+    std::array<T, M> a;
+    a.fill(x);
+    return a;
+  };
+  F f{};
+  static_constants<K> out;
+  out.degree = f(filled.template operator()<N>(unit(I))...).d;
+  out.weight = f(filled.template operator()<N>(weight_counter{})...).c;
+  out.depth = f(std::array<depth_counter, N>{}...).d;
+  return out;
+}
+
+/// The static stage, for polynomials without captures: `f` in plain
+/// double, its error bound from the inputs' norms (`C · Π nᵢ^degᵢ`, constant
+/// but for the norms), so no tracking of magnitudes.  Looser than the
+/// semi-static stage, which takes over when this one cannot decide.
+template <class F, std::size_t... N> stage_result static_stage(F const& f, approximation<N> const&... a) {
+  static constexpr auto k = static_constants_of<F, N...>(std::make_index_sequence<sizeof...(N)>{});
+  constexpr double u = std::numeric_limits<double>::epsilon() / 2;
+  double const v = f(a.v...);
+  double m = k.weight;
+  std::size_t i = 0;
+  auto times_power = [&m](double n, int d) {
+    for (int j = 0; j < d; ++j) m *= n;
+  };
+  (times_power(a.norm, k.degree[i++]), ...);
+  double bound = (2.0 * k.depth * u) * m;
+  if (v > bound) return {true, sign::positive, {}};
+  if (v < -bound) return {true, sign::negative, {}};
+  return {false, sign::zero, {}};
+}
 template <class F, std::size_t... N> stage_result semi_static(F const& f, std::array<sfloat, N> const&... a) {
   int const depth = f(std::array<depth_counter, N>{}...).d;
   constexpr double u = std::numeric_limits<double>::epsilon() / 2;
@@ -630,6 +709,10 @@ sign filtered_sign(F&& f, hvec<FT, N> const&... v) {
   } else {
     ++filter_stats().evaluations;
     if (filter_config().enabled) [[likely]] {
+      if constexpr (std::is_empty_v<std::remove_cvref_t<F>> && std::is_default_constructible_v<std::remove_cvref_t<F>>) {
+        auto p = detail::static_stage(f, v.approx()...);
+        if (p.certain) return p.s;
+      }
       auto q = detail::semi_static(f, detail::to_sfloat(v.approx())...);
       return q.certain ? q.s : detail::filtered_slow(f, q.r, v...);
     }
