@@ -142,37 +142,39 @@ template <std::size_t N> struct integer_vector {
 /// round (`-v`) costs no number at all.
 template <std::size_t N> class exact_pair {
 public:
-  exact_pair() : c_(std::array<rational, N>{}) {}
-  exact_pair(std::array<rational, N> c, integer_vector<N> z) : z_(std::move(z)), c_(std::move(c)) {}
+  exact_pair() : c_(std::make_unique<std::array<rational, N>>()) {}
+  exact_pair(std::array<rational, N> c, integer_vector<N> z)
+      : z_(std::move(z)), c_(std::make_unique<std::array<rational, N>>(std::move(c))) {}
   explicit exact_pair(integer_vector<N> z) : z_(std::move(z)) {}
 
   integer_vector<N> const& integers(bool negated) const {
     if (!negated) return z_;
-    std::call_once(negative_z_once_, [this] { negative_z_ = -z_; });
+    std::call_once(negative_z_once_, [this] { negative_z_ = std::make_unique<integer_vector<N>>(-z_); });
     return *negative_z_;
   }
 
   std::array<rational, N> const& rationals(bool negated) const {
     std::call_once(c_once_, [this] {
       if (c_) return;
-      std::array<rational, N> c;
-      for (std::size_t i = 0; i < N; ++i) mpq_set_z(c[i].backend().data(), z_.z[i].backend().data());
+      auto c = std::make_unique<std::array<rational, N>>();
+      for (std::size_t i = 0; i < N; ++i) mpq_set_z((*c)[i].backend().data(), z_.z[i].backend().data());
       c_ = std::move(c);
     });
     if (!negated) return *c_;
     std::call_once(negative_c_once_, [this] {
-      std::array<rational, N> m;
-      for (std::size_t i = 0; i < N; ++i) m[i] = -(*c_)[i];
+      auto m = std::make_unique<std::array<rational, N>>();
+      for (std::size_t i = 0; i < N; ++i) (*m)[i] = -(*c_)[i];
       negative_c_ = std::move(m);
     });
     return *negative_c_;
   }
 
 private:
+  // What is made on demand is held by pointer: an absent part costs 8 bytes.
   integer_vector<N> z_;
-  mutable std::optional<std::array<rational, N>> c_;
-  mutable std::optional<integer_vector<N>> negative_z_;
-  mutable std::optional<std::array<rational, N>> negative_c_;
+  mutable std::unique_ptr<std::array<rational, N>> c_;
+  mutable std::unique_ptr<integer_vector<N>> negative_z_;
+  mutable std::unique_ptr<std::array<rational, N>> negative_c_;
   mutable std::once_flag c_once_, negative_z_once_, negative_c_once_;
 };
 
@@ -677,10 +679,28 @@ template <class F, std::size_t... N>
   // Infinities and NaNs have no exact value: their floating-point sign it is.
   if (!std::isfinite(r.m)) return sign_of(r.v);
   ++filter_stats().fallbacks;
+  // A vector of doubles times 2^−e (e: the least exponent among its
+  // entries' integer mantissas) is a vector of integers: a positive
+  // multiple, made without rationals or gcds.
   auto exact = [](auto const& c) {
-    std::array<rational, std::tuple_size_v<std::remove_cvref_t<decltype(c)>>> q;
-    for (std::size_t i = 0; i < q.size(); ++i) q[i] = rational(c[i]);
-    return integer_multiple(q);
+    constexpr std::size_t M = std::tuple_size_v<std::remove_cvref_t<decltype(c)>>;
+    std::array<std::int64_t, M> mantissa{};
+    std::array<int, M> exponent{};
+    int least = std::numeric_limits<int>::max();
+    for (std::size_t i = 0; i < M; ++i) {
+      if (c[i] == 0) continue;
+      int e = 0;
+      mantissa[i] = static_cast<std::int64_t>(std::ldexp(std::frexp(c[i], &e), 53));
+      exponent[i] = e - 53;
+      least = std::min(least, exponent[i]);
+    }
+    std::array<integer, M> z;
+    for (std::size_t i = 0; i < M; ++i) {
+      if (mantissa[i] == 0) continue;
+      mpz_set_si(z[i].backend().data(), static_cast<long>(mantissa[i]));
+      mpz_mul_2exp(z[i].backend().data(), z[i].backend().data(), static_cast<mp_bitcnt_t>(exponent[i] - least));
+    }
+    return z;
   };
   return integer_sign(f, exact(v.exact())...);
 }
