@@ -51,7 +51,7 @@ namespace geometry {
 
 /// Counters of filtered predicate evaluations on this thread.
 struct filter_statistics {
-  std::uint64_t evaluations = 0;  ///< filtered predicates evaluated
+  std::uint64_t evaluations = 0;  ///< filtered predicates evaluated (when counted, see `filter_settings`)
   std::uint64_t fallbacks = 0;    ///< of these, how many needed exact arithmetic
   std::size_t max_exact_bits = 0; ///< largest bit length seen by an exact evaluation (when tracked)
 };
@@ -67,6 +67,11 @@ struct filter_settings {
   /// false: the exact stage skips its fixed-width rungs (128, 256 and 512
   /// bits on the stack) and evaluates in GMP integers (for comparison).
   bool fixed_width = true;
+  /// true: count every filtered predicate in `filter_stats().evaluations`.
+  /// Off by default: a counter written at every call makes each call wait
+  /// for the previous one's store, which costs as much as the filter.
+  /// Fallbacks are always counted.
+  bool count_evaluations = false;
 };
 
 /// This thread's counters.
@@ -723,11 +728,11 @@ sign filtered_sign(F&& f, hvec<FT, N> const&... v) {
     // meet in a tiny triangle, consistently), which is what keeps a map built
     // over double a valid map.
     if (!filter_config().exact_double_signs) return sign_of(f(v.exact()...));
-    ++filter_stats().evaluations;
+    if (filter_config().count_evaluations) ++filter_stats().evaluations;
     auto q = detail::semi_static(f, detail::to_sfloat(v.exact())...);
     return q.certain ? q.s : detail::double_slow(f, q.r, v...);
   } else {
-    ++filter_stats().evaluations;
+    if (filter_config().count_evaluations) ++filter_stats().evaluations;
     if (filter_config().enabled) [[likely]] {
       if constexpr (std::is_empty_v<std::remove_cvref_t<F>> && std::is_default_constructible_v<std::remove_cvref_t<F>>) {
         auto p = detail::static_stage(f, v.approx()...);

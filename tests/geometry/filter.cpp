@@ -20,6 +20,14 @@ struct plain_double {
   plain_double& operator=(plain_double const&) = delete;
 };
 
+/// Counting of every filtered evaluation for the length of a test.
+struct counting {
+  counting() { filter_config().count_evaluations = true; }
+  ~counting() { filter_config().count_evaluations = false; }
+  counting(counting const&) = delete;
+  counting& operator=(counting const&) = delete;
+};
+
 struct counts {
   int compared = 0, double_wrong = 0, filtered_wrong = 0;
 };
@@ -30,6 +38,7 @@ std::array<Q, 3> q3(double a, double b, double c) { return {Q(a), Q(b), Q(c)}; }
 
 TEST_CASE("E2: points 1 ulp off a line", "[filter][e2]") {
   plain_double plain;
+  counting count;
   // The classic orientation experiment (Kettner et al.): a grid of points
   // ulps away from (0.5, 0.5), against the line through (12, 12) and (24, 24).
   counts c;
@@ -140,6 +149,7 @@ TEST_CASE("S2 and E2: the vertex of nearly coincident circles", "[filter][s2]") 
 }
 
 TEST_CASE("the filter certifies exact zeros without exact arithmetic when every monomial vanishes", "[filter]") {
+  counting count;
   auto s0 = filter_stats();
   hvec<Q, 3> a(std::array<Q, 3>{Q(1), Q(0), Q(0)}), b(std::array<Q, 3>{Q(0), Q(1), Q(0)});
   CHECK(dot_sign(a, b) == sign::zero);
@@ -353,4 +363,20 @@ TEST_CASE("the static stage: constants from the polynomial, and never a wrong ce
   CHECK(total == 3000);
   CHECK(wrong == 0);
   CHECK(certain >= 300); // the independent triples at least
+}
+
+TEST_CASE("evaluations are counted only when asked for; fallbacks always", "[filter]") {
+  Q big = Q(boost::multiprecision::mpz_int(1) << 60) + 1; // not a double: the filter hands over
+  hvec<Q, 3> a(std::array<Q, 3>{big, Q(1), Q(0)}), b(std::array<Q, 3>{Q(1), -big, Q(5)});
+  auto s0 = filter_stats();
+  CHECK(dot_sign(a, b) == sign::zero);
+  auto s1 = filter_stats();
+  CHECK(s1.evaluations == s0.evaluations);
+  CHECK(s1.fallbacks == s0.fallbacks + 1);
+  {
+    counting count;
+    CHECK(dot_sign(a, b) == sign::zero);
+  }
+  CHECK(filter_stats().evaluations == s1.evaluations + 1);
+  CHECK(filter_stats().fallbacks == s1.fallbacks + 1);
 }
