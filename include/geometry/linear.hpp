@@ -29,6 +29,14 @@ template <class T> constexpr T det3(std::array<T, 3> const& a, std::array<T, 3> 
   return a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
 }
 
+/// The 4 × 4 determinant `|a b c d|`, by the 2 × 2 minors of its first two rows.
+template <class T>
+constexpr T det4(std::array<T, 4> const& a, std::array<T, 4> const& b, std::array<T, 4> const& c, std::array<T, 4> const& d) {
+  auto m = [](std::array<T, 4> const& x, std::array<T, 4> const& y, std::size_t i, std::size_t j) { return x[i] * y[j] - x[j] * y[i]; };
+  return m(a, b, 0, 1) * m(c, d, 2, 3) - m(a, b, 0, 2) * m(c, d, 1, 3) + m(a, b, 0, 3) * m(c, d, 1, 2) +
+         m(a, b, 1, 2) * m(c, d, 0, 3) - m(a, b, 1, 3) * m(c, d, 0, 2) + m(a, b, 2, 3) * m(c, d, 0, 1);
+}
+
 /// @name Predicates on homogeneous vectors (filtered over exact fields)
 /// @{
 
@@ -156,6 +164,27 @@ hvec<FT, N> lift(hvec<FT, N> const& p, std::size_t k, std::array<FT, N - 1> x) {
   }
   r[k] = neg ? s : FT(-s);
   return hvec<FT, N>(std::move(r));
+}
+
+/// `lift` of a restricted vector given as a vector, on its integers.
+template <number FT, std::size_t N> hvec<FT, N> lift(hvec<FT, N> const& p, std::size_t k, hvec<FT, N - 1> const& x) {
+  bool flip = detail::restriction_flips(p, k), neg = p.sign_at(k) == sign::negative;
+  return construct<N>(
+      [k, flip, neg](auto const& P, auto const& X) {
+        using T = std::remove_cvref_t<decltype(P[0])>;
+        std::array<T, N> r;
+        T s{};
+        for (std::size_t i = 0, j = 0; i < N; ++i) {
+          if (i == k) continue;
+          T xj = (flip && j == 0) ? T(-X[j]) : T(X[j]);
+          r[i] = neg ? T(-(P[k] * xj)) : T(P[k] * xj);
+          s = j == 0 ? T(P[i] * xj) : T(s + P[i] * xj);
+          ++j;
+        }
+        r[k] = neg ? s : T(-s);
+        return r;
+      },
+      p, x);
 }
 
 /// A restricted vector seen from the opposite hyperplane `-p`: its first

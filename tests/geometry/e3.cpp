@@ -168,3 +168,23 @@ TEMPLATE_TEST_CASE("E3 degenerate and unbounded polyhedra", "[e3]", double, rati
     CHECK(c.faces.size() == 4);
   }
 }
+
+TEST_CASE("det4 agrees with the cofactor expansion along the first row", "[e3][linear]") {
+  for (int t = 0; t < 200; ++t) {
+    std::array<std::array<Q, 4>, 4> m;
+    for (auto& row : m)
+      for (auto& x : row) x = test::random_decimal();
+    if (t % 4 == 0) m[3] = {m[0][0] + m[1][0], m[0][1] + m[1][1], m[0][2] + m[1][2], m[0][3] + m[1][3]}; // singular
+    Q expansion(0);
+    for (std::size_t j = 0; j < 4; ++j) {
+      std::array<std::array<Q, 3>, 3> minor;
+      for (std::size_t r = 1; r < 4; ++r)
+        for (std::size_t c = 0, k = 0; c < 4; ++c)
+          if (c != j) minor[r - 1][k++] = m[r][c];
+      Q cofactor = det3(minor[0], minor[1], minor[2]);
+      expansion += (j % 2 ? Q(-1) : Q(1)) * m[0][j] * cofactor;
+    }
+    CHECK(det4(m[0], m[1], m[2], m[3]) == expansion);
+    if (t % 4 == 0) CHECK(expansion == 0);
+  }
+}

@@ -88,8 +88,7 @@ template <number FT> std::vector<hvec<FT, 4>> homogeneous_vertices(sub_hyperplan
   std::size_t k = s.bounds.size();
   if (k < 2) return out;
   for (std::size_t i = 0; i < k; ++i) {
-    auto x = cross(s.bounds[i].line(), s.bounds[(i + 1) % k].line());
-    out.push_back(lift(s.support.n, s.axis, x.exact()));
+    out.push_back(lift(s.support.n, s.axis, cross(s.bounds[i].line(), s.bounds[(i + 1) % k].line())));
   }
   return out;
 }
@@ -177,6 +176,34 @@ template <number FT> polytope<FT> box(point<FT> const& lo, point<FT> const& hi) 
 /// Volume of a bounded polyhedron, exact over exact fields; nothing when unbounded.
 template <number FT> std::optional<FT> volume(polytope<FT> const& c) {
   if (c.faces.empty()) return std::nullopt;
+  if constexpr (exact_field<FT>) {
+    // On the vertices' integer homogeneous coordinates: the pyramid from a
+    // vertex o of the cell over the fan triangle (a, b, e) of a face has 6 ×
+    // volume |det4(o, a, b, e)| / (w_o·w_a·w_b·w_e), and only the sum of a
+    // face's fan is a rational.
+    std::vector<std::vector<hvec<FT, 4>>> fv;
+    for (auto const& f : c.faces) {
+      auto hv = homogeneous_vertices(f);
+      if (hv.empty()) return std::nullopt;
+      for (auto const& x : hv)
+        if (x.sign_at(3) != sign::positive) return std::nullopt;
+      fv.push_back(std::move(hv));
+    }
+    auto const& o = fv[0][0].integers();
+    FT six(0);
+    for (auto const& v : fv) {
+      FT face(0);
+      auto const& a = v[0].integers();
+      for (std::size_t i = 1; i + 1 < v.size(); ++i) {
+        auto const &b = v[i].integers(), &e = v[i + 1].integers();
+        integer n = det4(o, a, b, e);
+        if (n == 0) continue;
+        face += FT(n, integer(o[3] * a[3] * b[3] * e[3]));
+      }
+      six += sign_of(face) == sign::negative ? FT(-face) : face;
+    }
+    return FT(six / FT(6));
+  }
   std::vector<std::vector<point<FT>>> fv;
   FT cx(0), cy(0), cz(0);
   std::size_t count = 0;
