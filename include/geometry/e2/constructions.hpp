@@ -69,6 +69,22 @@ template <number FT> std::optional<std::vector<point<FT>>> vertices(polytope<FT>
 
 /// Area of a polytope, exact over exact fields; nothing when it is unbounded.
 template <number FT> std::optional<FT> area(polytope<FT> const& c) {
+  if constexpr (exact_field<FT>) {
+    // On the vertices' integer homogeneous coordinates: the fan triangle
+    // (o, a, b) has twice the area det3(o, a, b) / (w_o·w_a·w_b).
+    auto h = homogeneous_vertices(c);
+    if (h.empty()) return std::nullopt;
+    for (auto const& x : h)
+      if (x.sign_at(2) != sign::positive) return std::nullopt;
+    auto const& o = h[0].integers();
+    FT twice(0);
+    for (std::size_t i = 1; i + 1 < h.size(); ++i) {
+      auto const &a = h[i].integers(), &b = h[i + 1].integers();
+      integer n = det3(o, a, b);
+      if (n != 0) twice += FT(n, integer(o[2] * a[2] * b[2]));
+    }
+    return FT(twice / FT(2));
+  }
   auto v = vertices(c);
   if (!v) return std::nullopt;
   FT twice(0);
