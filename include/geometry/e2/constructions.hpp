@@ -61,8 +61,13 @@ template <number FT> std::optional<std::vector<point<FT>>> vertices(polytope<FT>
   auto hv = homogeneous_vertices(c);
   if (hv.empty()) return std::nullopt;
   for (auto const& v : hv) {
-    if (sign_of(v[2]) != sign::positive) return std::nullopt;
-    out.emplace_back(FT(v[0] / v[2]), FT(v[1] / v[2]));
+    if (v.sign_at(2) != sign::positive) return std::nullopt;
+    if constexpr (exact_field<FT>) {
+      auto const& z = v.integers(); // one canonical fraction a coordinate
+      out.emplace_back(FT(z[0], z[2]), FT(z[1], z[2]));
+    } else {
+      out.emplace_back(FT(v[0] / v[2]), FT(v[1] / v[2]));
+    }
   }
   return out;
 }

@@ -99,8 +99,13 @@ template <number FT> std::optional<std::vector<point<FT>>> vertices(sub_hyperpla
   if (hv.empty()) return std::nullopt;
   std::vector<point<FT>> out;
   for (auto const& x : hv) {
-    if (sign_of(x[3]) != sign::positive) return std::nullopt;
-    out.emplace_back(FT(x[0] / x[3]), FT(x[1] / x[3]), FT(x[2] / x[3]));
+    if (x.sign_at(3) != sign::positive) return std::nullopt;
+    if constexpr (exact_field<FT>) {
+      auto const& z = x.integers(); // one canonical fraction a coordinate
+      out.emplace_back(FT(z[0], z[3]), FT(z[1], z[3]), FT(z[2], z[3]));
+    } else {
+      out.emplace_back(FT(x[0] / x[3]), FT(x[1] / x[3]), FT(x[2] / x[3]));
+    }
   }
   return out;
 }
