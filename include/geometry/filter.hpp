@@ -65,7 +65,8 @@ struct filter_settings {
   /// floating point ("plain double", whose signs may contradict each other).
   bool exact_double_signs = true;
   /// false: the exact stage skips its fixed-width rungs (128, 256 and 512
-  /// bits on the stack) and evaluates in GMP integers (for comparison).
+  /// bits on the stack) and evaluates in GMP integers, and constructions
+  /// skip their 128-bit rung (for comparison).
   bool fixed_width = true;
   /// true: count every filtered predicate in `filter_stats().evaluations`.
   /// Off by default: a counter written at every call makes each call wait
@@ -183,6 +184,14 @@ private:
   mutable std::once_flag c_once_, negative_z_once_, negative_c_once_;
 };
 
+/// Divides `z` by the greatest common divisor of its entries (when not 0).
+template <std::size_t M> void make_primitive(std::array<integer, M>& z) {
+  integer g(0);
+  for (auto const& x : z) mpz_gcd(g.backend().data(), g.backend().data(), x.backend().data());
+  if (mpz_cmp_ui(g.backend().data(), 1) > 0)
+    for (auto& x : z) mpz_divexact(x.backend().data(), x.backend().data(), g.backend().data());
+}
+
 /// The primitive integer multiple of `c` (see `exact_pair`).
 template <std::size_t N> std::array<integer, N> integer_multiple(std::array<rational, N> const& c) {
   integer scale(1);
@@ -191,15 +200,12 @@ template <std::size_t N> std::array<integer, N> integer_multiple(std::array<rati
     if (mpz_cmp_ui(den, 1) != 0) mpz_lcm(scale.backend().data(), scale.backend().data(), den);
   }
   std::array<integer, N> r;
-  integer g(0);
   for (std::size_t i = 0; i < N; ++i) {
     auto const* q = c[i].backend().data();
     mpz_divexact(r[i].backend().data(), scale.backend().data(), mpq_denref(q));
     mpz_mul(r[i].backend().data(), r[i].backend().data(), mpq_numref(q));
-    mpz_gcd(g.backend().data(), g.backend().data(), r[i].backend().data());
   }
-  if (mpz_cmp_ui(g.backend().data(), 1) > 0)
-    for (auto& x : r) mpz_divexact(x.backend().data(), x.backend().data(), g.backend().data());
+  make_primitive(r);
   return r;
 }
 
@@ -363,14 +369,6 @@ inline uint128 gcd(uint128 a, uint128 b) noexcept {
     b -= a;
   }
   return a << shift;
-}
-
-/// Divides `z` by the greatest common divisor of its entries (when not 0).
-template <std::size_t M> void make_primitive(std::array<integer, M>& z) {
-  integer g(0);
-  for (auto const& x : z) mpz_gcd(g.backend().data(), g.backend().data(), x.backend().data());
-  if (mpz_cmp_ui(g.backend().data(), 1) > 0)
-    for (auto& x : z) mpz_divexact(x.backend().data(), x.backend().data(), g.backend().data());
 }
 
 /// The primitive integer vector of the values of `f` on integer vectors:

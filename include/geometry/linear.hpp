@@ -149,24 +149,6 @@ template <number FT, std::size_t N> hvec<FT, N - 1> drop(hvec<FT, N> const& p, s
 
 /// The point of the hyperplane `p` whose restricted coordinates are `x`: the
 /// inverse of `drop`, up to a positive factor.
-template <number FT, std::size_t N>
-hvec<FT, N> lift(hvec<FT, N> const& p, std::size_t k, std::array<FT, N - 1> x) {
-  if (detail::restriction_flips(p, k)) x[0] = -x[0];
-  std::array<FT, N> r;
-  FT const& pk = p[k];
-  bool neg = sign_of(pk) == sign::negative;
-  FT s(0);
-  for (std::size_t i = 0, j = 0; i < N; ++i) {
-    if (i == k) continue;
-    r[i] = neg ? FT(-(pk * x[j])) : FT(pk * x[j]);
-    s = s + p[i] * x[j];
-    ++j;
-  }
-  r[k] = neg ? s : FT(-s);
-  return hvec<FT, N>(std::move(r));
-}
-
-/// `lift` of a restricted vector given as a vector, on its integers.
 template <number FT, std::size_t N> hvec<FT, N> lift(hvec<FT, N> const& p, std::size_t k, hvec<FT, N - 1> const& x) {
   bool flip = detail::restriction_flips(p, k), neg = p.sign_at(k) == sign::negative;
   return construct<N>(
@@ -178,13 +160,18 @@ template <number FT, std::size_t N> hvec<FT, N> lift(hvec<FT, N> const& p, std::
           if (i == k) continue;
           T xj = (flip && j == 0) ? T(-X[j]) : T(X[j]);
           r[i] = neg ? T(-(P[k] * xj)) : T(P[k] * xj);
-          s = j == 0 ? T(P[i] * xj) : T(s + P[i] * xj);
+          s = s + P[i] * xj;
           ++j;
         }
         r[k] = neg ? s : T(-s);
         return r;
       },
       p, x);
+}
+
+/// The same, for restricted coordinates given as numbers.
+template <number FT, std::size_t N> hvec<FT, N> lift(hvec<FT, N> const& p, std::size_t k, std::array<FT, N - 1> x) {
+  return lift(p, k, hvec<FT, N - 1>(std::move(x)));
 }
 
 /// A restricted vector seen from the opposite hyperplane `-p`: its first

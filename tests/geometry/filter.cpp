@@ -380,3 +380,74 @@ TEST_CASE("evaluations are counted only when asked for; fallbacks always", "[fil
   CHECK(filter_stats().evaluations == s1.evaluations + 1);
   CHECK(filter_stats().fallbacks == s1.fallbacks + 1);
 }
+
+TEST_CASE("constructions on integers: the true vector up to a positive factor, primitive, on every rung", "[filter][construct]") {
+  // Coordinates of 20, 40 and 70 bits, as integers and as fractions: cross
+  // products of 3-vectors then take the 128-bit rung or GMP integers; with
+  // the fixed-width rungs off, GMP integers always.  Checked against
+  // properties the construction must have, in rationals: `cross(a, b)` is
+  // orthogonal to both and turns positively; `restrict_to(p, k, b)` gives
+  // every point x of p the side `b · x`.
+  auto primitive = [](auto const& v) {
+    integer g(0);
+    for (auto const& z : v.integers()) g = boost::multiprecision::gcd(g, z);
+    return g == 1;
+  };
+  for (bool fixed : {true, false}) {
+    filter_config().fixed_width = fixed;
+    for (int bits : {20, 40, 70}) {
+      for (bool fractions : {false, true}) {
+        auto big = [&] {
+          Q x(boost::multiprecision::mpz_int(test::uniform(-1000000, 1000000)) << (bits - 20));
+          return fractions ? Q(x / Q(test::uniform(1, 97))) : x;
+        };
+        int crossed = 0, restricted = 0;
+        for (int t = 0; t < 100; ++t) {
+          std::array<Q, 3> a{big(), big(), big()}, b{big(), big(), big()};
+          auto c = cross(hvec<Q, 3>(a), hvec<Q, 3>(b));
+          std::array<Q, 3> const& r = c.exact();
+          if (r == std::array<Q, 3>{}) continue; // a, b parallel
+          CHECK(test::ref_dot(r, a) == 0);
+          CHECK(test::ref_dot(r, b) == 0);
+          CHECK(test::ref_det3(a, b, r) > 0);
+          CHECK(primitive(c));
+          ++crossed;
+          // The plane through three points, a point x in it, a plane h.
+          std::array<std::array<Q, 3>, 3> q;
+          for (auto& pt : q) pt = {big(), big(), big()};
+          std::array<Q, 3> u{q[1][0] - q[0][0], q[1][1] - q[0][1], q[1][2] - q[0][2]};
+          std::array<Q, 3> w{q[2][0] - q[0][0], q[2][1] - q[0][1], q[2][2] - q[0][2]};
+          std::array<Q, 3> n{u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+          if (n == std::array<Q, 3>{}) continue;
+          hvec<Q, 4> P(std::array<Q, 4>{n[0], n[1], n[2], -test::ref_dot(n, q[0])});
+          Q s(test::uniform(-5, 5), 7), v(test::uniform(-5, 5), 3);
+          std::array<Q, 4> x{q[0][0] + s * u[0] + v * w[0], q[0][1] + s * u[1] + v * w[1], q[0][2] + s * u[2] + v * w[2], Q(1)};
+          std::array<Q, 4> h{big(), big(), big(), big()};
+          std::size_t k = dominant_axis(P);
+          auto R = restrict_to(P, k, hvec<Q, 4>(h));
+          auto X = drop(P, k, hvec<Q, 4>(x));
+          Q bx = h[0] * x[0] + h[1] * x[1] + h[2] * x[2] + h[3] * x[3];
+          Q rx = R[0] * X[0] + R[1] * X[1] + R[2] * X[2];
+          CHECK(rx.sign() == bx.sign());
+          CHECK(primitive(R));
+          ++restricted;
+        }
+        INFO(bits << " bits, fractions " << fractions << ", fixed widths " << fixed);
+        CHECK(crossed >= 95);
+        CHECK(restricted >= 95);
+      }
+    }
+  }
+  filter_config().fixed_width = true;
+}
+
+TEST_CASE("exact vectors are equal when they are the same up to a positive factor", "[filter]") {
+  hvec<Q, 3> a(std::array<Q, 3>{Q(1, 2), Q(-1, 3), Q(2)}), twice(std::array<Q, 3>{Q(1), Q(-2, 3), Q(4)});
+  CHECK(a == twice);
+  CHECK_FALSE(a == -twice);
+  CHECK(-a == -twice);
+  CHECK_FALSE(a == hvec<Q, 3>(std::array<Q, 3>{Q(1, 2), Q(-1, 3), Q(3)}));
+  // A vector made from integers equals the rational one it is a multiple of.
+  auto c = cross(hvec<Q, 3>(std::array<Q, 3>{Q(1), Q(0), Q(0)}), hvec<Q, 3>(std::array<Q, 3>{Q(0), Q(1, 5), Q(0)}));
+  CHECK(c == hvec<Q, 3>(std::array<Q, 3>{Q(0), Q(0), Q(1, 5)}));
+}
