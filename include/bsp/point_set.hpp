@@ -16,20 +16,6 @@
 
 namespace bsp {
 
-namespace detail {
-
-/// −1 or +1 when the sub-hyperplane `s` lies wholly on that side of `h` (as
-/// `split` would put it), found cheaply by a geometry that offers
-/// `whole_side`; 0 when `split` must decide.
-template <geometry G> int whole_side(typename G::sub_hyperplane const& s, typename G::hyperplane const& h) {
-  if constexpr (whole_side_geometry<G>)
-    return static_cast<int>(G::whole_side(s, h));
-  else
-    return 0;
-}
-
-} // namespace detail
-
 /// A point-set tree over `G` with labels `L` at its leaves.
 template <geometry G, label L = bool> using point_set = tree<G, none, L>;
 
@@ -98,6 +84,58 @@ point_set<G, L> build_point_set(std::vector<typename G::sub_hyperplane> boundary
     t.attach(w.parent, w.side, n);
     stack.push_back({std::move(neg), n, -1, free ? w.empty : inside});
     stack.push_back({std::move(pos), n, +1, free ? w.empty : outside});
+  }
+  return t;
+}
+
+template <geometry G, label L> struct boundary_piece;
+
+/// Builds a tree that labels the cells of a partition (a map's faces, say)
+/// from the pieces of their common boundaries: each piece lies between a cell
+/// labelled `negative` and one labelled `positive` on those sides of its
+/// hyperplane.  Every node's hyperplane supports a piece (an autopartition in
+/// the order `policy` chooses), and a leaf takes the label on its side of the
+/// last piece split there: that piece lies on the leaf's boundary, and no
+/// piece crosses the leaf.  With no pieces the tree is one leaf labelled
+/// `whole`.  Pieces lying in a node's hyperplane end there.  Classification
+/// of a point on a piece gives the label of the node's positive side.
+template <geometry G, label L, splitting_policy<G, boundary_piece<G, L>> Policy = input_order>
+point_set<G, L> build_partition(std::vector<boundary_piece<G, L>> pieces, L whole, Policy policy = {}) {
+  using B = boundary_piece<G, L>;
+  point_set<G, L> t(whole);
+  struct work {
+    std::vector<B> pieces;
+    node_id parent;
+    int side;
+    L label;
+  };
+  std::vector<work> stack;
+  stack.push_back({std::move(pieces), node_id{}, 0, whole});
+  auto piece = [](B const& b) -> typename G::sub_hyperplane const& { return b.piece; };
+  while (!stack.empty()) {
+    work w = std::move(stack.back());
+    stack.pop_back();
+    if (w.pieces.empty()) {
+      t.attach(w.parent, w.side, t.add_leaf(std::move(w.label)));
+      continue;
+    }
+    auto d = decide<G>(policy, w.pieces, piece);
+    typename G::hyperplane h = G::supporting(w.pieces[d.piece].piece);
+    L below = w.pieces[d.piece].negative, above = w.pieces[d.piece].positive;
+    std::vector<B> neg, pos;
+    for (auto& b : w.pieces) {
+      if (int side = detail::whole_side<G>(b.piece, h)) {
+        (side < 0 ? neg : pos).push_back(std::move(b));
+        continue;
+      }
+      auto r = G::split(b.piece, h);
+      if (r.negative) neg.push_back({std::move(*r.negative), b.negative, b.positive});
+      if (r.positive) pos.push_back({std::move(*r.positive), b.negative, b.positive});
+    }
+    node_id n = t.add_interior(std::move(h), node_id{}, node_id{});
+    t.attach(w.parent, w.side, n);
+    stack.push_back({std::move(neg), n, -1, std::move(below)});
+    stack.push_back({std::move(pos), n, +1, std::move(above)});
   }
   return t;
 }

@@ -9,6 +9,7 @@
 
 #include "concepts/geometry.hpp"
 #include "concepts/policy.hpp"
+#include "concepts/whole_side.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -19,6 +20,20 @@
 #include <vector>
 
 namespace bsp {
+
+namespace detail {
+
+/// −1 or +1 when the sub-hyperplane `s` lies wholly on that side of `h` (as
+/// `split` would put it), found cheaply by a geometry that offers
+/// `whole_side`; 0 when `split` must decide.
+template <geometry G> int whole_side(typename G::sub_hyperplane const& s, typename G::hyperplane const& h) {
+  if constexpr (whole_side_geometry<G>)
+    return static_cast<int>(G::whole_side(s, h));
+  else
+    return 0;
+}
+
+} // namespace detail
 
 /// The first piece: the input order decides (deterministic, and the tree
 /// mirrors the input; a sorted input can give a deep tree).
@@ -97,8 +112,88 @@ template <class Cutter> struct balanced {
 
   Cutter cutter;
   std::size_t threshold;
-  std::size_t samples = 4, probe = 32, min_share = 8;
+  std::size_t samples = 8, small_samples = 3, probe = 64, min_share = 8, split_weight = 4;
   std::mt19937_64 rng;
+};
+
+/// Autopartition that splits as little as it can while staying shallow.
+/// Of `samples` random candidates, scored on a random subset of `probe`
+/// pieces, it takes the one with the least `split_weight` × splits +
+/// imbalance among those leaving at least one piece in `min_share` on each
+/// side.  When no candidate is that balanced (a convex surface, whose
+/// autopartition is a chain n deep), it asks `cutter(pieces)` for a free
+/// hyperplane and takes it if that is balanced; failing that, the candidate
+/// with the fewest splits.  At or below `threshold` pieces, of
+/// `small_samples` candidates scored on every piece, the one with the fewest
+/// splits (ties: the more even), and no free cut.  A depth-order tree built
+/// with it has few fragments per input polygon on scenes of boxes and slabs,
+/// through which `balanced`'s free cuts go.
+template <class Cutter> struct few_splits {
+  explicit few_splits(Cutter c, std::uint64_t seed = 1) : cutter(std::move(c)), rng(seed) {}
+
+  template <geometry G, class Item, class Piece>
+  split_decision<typename G::hyperplane> decide(std::vector<Item> const& items, Piece&& piece) {
+    std::size_t n = items.size();
+    if (n == 1) return {0, std::nullopt};
+    std::uniform_int_distribution<std::size_t> pick(0, n - 1);
+    bool small = n <= threshold;
+    std::size_t m = small ? n : probe;
+    sample.resize(m);
+    for (std::size_t i = 0; i < m; ++i) sample[i] = small ? i : pick(rng);
+    struct score {
+      std::size_t splits, neg, pos;
+      std::size_t least() const { return neg < pos ? neg : pos; }
+      std::size_t imbalance() const { return neg > pos ? neg - pos : pos - neg; }
+    };
+    auto count = [&](typename G::hyperplane const& h) {
+      score s{0, 0, 0};
+      for (std::size_t i : sample) {
+        auto const& p = piece(items[i]);
+        if (int w = detail::whole_side<G>(p, h)) {
+          ++(w < 0 ? s.neg : s.pos);
+          continue;
+        }
+        auto r = G::split(p, h);
+        s.splits += r.negative && r.positive;
+        s.neg += r.negative.has_value();
+        s.pos += r.positive.has_value();
+      }
+      return s;
+    };
+    std::size_t k = small ? small_samples : samples;
+    std::size_t tries = n <= k ? n : k;
+    if (small) {
+      std::size_t best = 0;
+      std::optional<score> best_score;
+      for (std::size_t t = 0; t < tries; ++t) {
+        std::size_t c = n <= k ? t : pick(rng);
+        score s = count(G::supporting(piece(items[c])));
+        if (!best_score || s.splits < best_score->splits ||
+            (s.splits == best_score->splits && s.imbalance() < best_score->imbalance()))
+          best = c, best_score = s;
+      }
+      return {best, std::nullopt};
+    }
+    auto balanced = [&](score const& s) { return s.least() * min_share >= m; };
+    auto cost = [&](score const& s) { return s.splits * split_weight + s.imbalance(); };
+    std::size_t best = 0, fewest = 0;
+    std::optional<score> best_score, fewest_score;
+    for (std::size_t t = 0; t < tries; ++t) {
+      std::size_t c = pick(rng);
+      score s = count(G::supporting(piece(items[c])));
+      if (!fewest_score || s.splits < fewest_score->splits) fewest = c, fewest_score = s;
+      if (balanced(s) && (!best_score || cost(s) < cost(*best_score))) best = c, best_score = s;
+    }
+    if (best_score) return {best, std::nullopt};
+    if (auto cut = cutter(items))
+      if (balanced(count(*cut))) return {fewest, std::move(cut)};
+    return {fewest, std::nullopt};
+  }
+
+  Cutter cutter;
+  std::size_t samples = 8, small_samples = 3, threshold = 64, probe = 64, min_share = 8, split_weight = 4;
+  std::mt19937_64 rng;
+  std::vector<std::size_t> sample;
 };
 
 } // namespace bsp

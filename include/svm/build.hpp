@@ -2,14 +2,19 @@
 /// Construction of the spherical visibility map (the paper's section 3): a
 /// depth-order BSP tree of the scene, traversed front to back from the eye;
 /// each fragment, described on the sphere by the circles through the eye and
-/// its edges' lines, descends the S2 point-set tree V; where it reaches an
-/// empty leaf it is visible, and a subtree made of its flagged edges replaces
-/// the leaf while the map T is cut with `split_edge` and `split_face`.
+/// its edges' lines, descends an S2 coverage tree (the paper's V, whose
+/// covered siblings collapse: `bsp::coverage_tree`); where it reaches a free
+/// leaf it is visible, and a subtree made of its flagged edges replaces the
+/// leaf while the map T is cut with `split_edge` and `split_face`.  A
+/// point-set tree built from T's edges then locates directions.
 #pragma once
 
 #include "dcel.hpp"
 
+#include <bsp/coverage.hpp>
 #include <bsp/depth_order.hpp>
+#include <bsp/point_set.hpp>
+#include <bsp/splitter.hpp>
 #include <bsp/tree.hpp>
 #include <boost/pending/disjoint_sets.hpp>
 #include <geometry/e3.hpp>
@@ -53,6 +58,11 @@ struct build_options {
   /// Great circles cut through the whole map first and kept by
   /// simplification (a panorama's seam and poles).
   std::vector<circle_normal> cuts{};
+  /// Keep the paper's tree V (every cell ever split, covered or not) and
+  /// locate directions with it, instead of a coverage tree whose covered
+  /// siblings collapse and a locator built from the final map.  Same map,
+  /// slower: for comparison and tests.  Builds over `double` always do.
+  bool keep_construction_tree = false;
   /// Called with the fraction of the scene's fragments inserted so far (0 to
   /// 1), about every percent, when set: for progress on long builds.
   std::function<void(double)> progress{};
@@ -68,20 +78,28 @@ struct build_statistics {
   std::size_t discarded_edge_on = 0;  ///< plane through the eye: no area on the sphere
   std::size_t discarded_backfacing = 0;
   std::size_t fragments = 0;          ///< of the depth-order tree
-  std::size_t hidden_pieces = 0;      ///< fragment pieces that reached a labelled leaf of V (or a clipped one)
-  std::size_t v_nodes = 0;
+  std::size_t hidden_pieces = 0;      ///< fragment pieces that reached a covered leaf (or a clipped one)
+  std::size_t v_nodes = 0;            ///< interior nodes of the coverage tree at the end of the build
+  std::size_t v_nodes_peak = 0;       ///< the most it ever had
+  std::size_t locator_nodes = 0;      ///< interior nodes of the tree that locates directions
+  double locator_seconds = 0;         ///< building it
+  double depth_order_seconds = 0;     ///< building the depth-order tree
   map_size unsimplified, simplified;
   std::uint64_t filter_fallbacks = 0;
   double seconds = 0;
 };
 
 /// The spherical visibility map: the half-edge map T (faces labelled with
-/// the visible polygon's `face`, or −1) and the tree V that locates directions in it.
+/// the visible polygon's `face`, or −1) and a point-set tree on the sphere
+/// whose leaves are T's faces, to locate directions.
 template <geometry::number FT> struct visibility_map {
   using number_type = FT;
-  using v_tree = bsp::tree<geometry::s2::kernel<FT>, bsp::none, index>;
+  using locator_tree = bsp::point_set<geometry::s2::kernel<FT>, index>;
   dcel<FT> map;
-  v_tree v;
+  /// Built from T's edges (`build_locator`), or the construction's own tree
+  /// with `build_options::keep_construction_tree`.
+  locator_tree locator;
+  bool locator_is_construction_tree = false;
   build_statistics stats;
 };
 
@@ -152,33 +170,22 @@ template <geometry::number FT> bool cuts(dcel<FT> const& m, index f, geometry::s
   return pos && neg;
 }
 
-/// Cuts circle `c` through every face of the map it crosses (the map and V
-/// still one face per leaf), each cut adding a node to V.
-template <geometry::number FT> void cut_everywhere(visibility_map<FT>& vm, geometry::s2::hyperplane<FT> const& c) {
-  auto& m = vm.map;
-  auto& v = vm.v;
-  struct leaf {
-    bsp::node_id n, parent;
-    int side;
-  };
-  std::vector<leaf> leaves, stack{{v.root(), bsp::node_id{}, 0}};
-  while (!stack.empty()) {
-    leaf l = stack.back();
-    stack.pop_back();
-    if (v.is_leaf(l.n)) leaves.push_back(l);
-    else {
-      stack.push_back({v.negative(l.n), l.n, -1});
-      stack.push_back({v.positive(l.n), l.n, +1});
-    }
-  }
+/// The tree that decides what is hidden during a build: its free leaves are
+/// the map's faces that nothing is visible in yet.
+template <geometry::number FT> using coverage = bsp::coverage_tree<geometry::s2::kernel<FT>, index>;
+
+/// Cuts circle `c` through every face of the map it crosses (the map and the
+/// coverage tree still one face per leaf), each cut adding a node to the tree.
+template <geometry::number FT> void cut_everywhere(dcel<FT>& m, coverage<FT>& v, geometry::s2::hyperplane<FT> const& c) {
+  std::vector<std::pair<bsp::node_id, typename coverage<FT>::place>> leaves;
+  v.for_each_leaf([&](bsp::node_id n, auto at) { leaves.emplace_back(n, at); });
   index ci = none;
-  for (auto const& l : leaves) {
-    index f = v.leaf_data(l.n);
+  for (auto const& [n, at] : leaves) {
+    index f = v.as_tree().leaf_data(n);
     if (!cuts(m, f, c)) continue;
     if (ci == none) ci = m.add_circle(c, provenance::cut);
     index g = m.faces()[f].edge == none ? m.make_first_circle(ci) : m.split_face(f, ci);
-    bsp::node_id node = v.add_interior(c, v.add_leaf(g), v.add_leaf(f));
-    v.attach(l.parent, l.side, node);
+    v.split(at, c, g, f);
   }
 }
 
@@ -197,7 +204,7 @@ template <geometry::number FT> bool on_positive_side(dcel<FT> const& m, index f,
 /// Cuts the window's, the excluded polygon's and the free cuts' circles
 /// through the map and labels the faces outside the window or inside the
 /// excluded polygon `clipped`.
-template <geometry::number FT> void prepare(visibility_map<FT>& vm, build_options const& o) {
+template <geometry::number FT> void prepare(dcel<FT>& m, coverage<FT>& v, build_options const& o) {
   using circle = geometry::s2::hyperplane<FT>;
   auto exact = [](std::vector<circle_normal> const& cs) {
     std::vector<circle> out;
@@ -210,8 +217,7 @@ template <geometry::number FT> void prepare(visibility_map<FT>& vm, build_option
   };
   auto window = exact(o.window), excluded = exact(o.exclude), free_cuts = exact(o.cuts);
   for (auto const* group : {&window, &excluded, &free_cuts})
-    for (auto const& c : *group) cut_everywhere(vm, c);
-  auto& m = vm.map;
+    for (auto const& c : *group) cut_everywhere(m, v, c);
   for (index f = 0; f < m.faces().size(); ++f) {
     bool out = false;
     for (auto const& c : window) out = out || !on_positive_side(m, f, c);
@@ -222,13 +228,63 @@ template <geometry::number FT> void prepare(visibility_map<FT>& vm, build_option
     }
     if (out) m.face_at(f).label = clipped;
   }
+  // What is clipped is covered: nothing is ever visible there.
+  std::vector<std::pair<bsp::node_id, typename coverage<FT>::place>> leaves;
+  v.for_each_leaf([&](bsp::node_id n, auto at) { leaves.emplace_back(n, at); });
+  for (auto const& [n, at] : leaves)
+    if (m.faces()[v.as_tree().leaf_data(n)].label != -1 && !v.is_covered(n)) v.cover(at, n);
+}
+
+/// The arc of the map's half-edge `e` (even: it runs about its table
+/// circle), bounded by circles through its endpoints taken from the
+/// endpoints' own pairs: input-derived, so its predicates keep their degree.
+template <geometry::number FT> geometry::s2::sub_hyperplane<FT> edge_arc(dcel<FT> const& m, index e) {
+  using geometry::sign;
+  auto const& C = m.circles();
+  auto const& support = C[m.half_edges()[e].circle];
+  // A circle through u, other than the support, oriented with w on its positive side.
+  auto bound_at = [&](index u, index w) {
+    auto const& V = m.vertices()[u];
+    auto const* b = &C[V.a];
+    if (geometry::parallel(b->n, support.n) != sign::zero) b = &C[V.b];
+    auto s = m.side(w, *b);
+    if (s == sign::zero) throw std::logic_error("svm: a map edge is not a minor arc");
+    return s == sign::positive ? *b : b->opposite();
+  };
+  index u = m.origin(e), w = m.target(e);
+  auto half = geometry::s2::split(geometry::s2::whole_circle(support), bound_at(u, w));
+  if (!half.positive) throw std::logic_error("svm: a map edge has an empty arc");
+  auto arc = geometry::s2::split(*half.positive, bound_at(w, u));
+  if (!arc.positive) throw std::logic_error("svm: a map edge has an empty arc");
+  return std::move(*arc.positive);
+}
+
+/// A point-set tree whose leaves are the faces of `m`: an autopartition of
+/// its edges in random order (expected O(n log n) nodes for n edges).
+template <geometry::number FT> typename visibility_map<FT>::locator_tree build_locator(dcel<FT> const& m, std::uint64_t seed) {
+  using K = geometry::s2::kernel<FT>;
+  std::vector<bsp::boundary_piece<K, index>> pieces;
+  auto const& he = m.half_edges();
+  pieces.reserve(he.size() / 2);
+  for (index e = 0; e < he.size(); e += 2) pieces.push_back({edge_arc(m, e), he[e + 1].face, he[e].face});
+  return bsp::build_partition<K, index>(std::move(pieces), index{0}, bsp::random_order(seed));
+}
+
+/// Builds `vm.locator` from the map, with its statistics.
+template <geometry::number FT> void rebuild_locator(visibility_map<FT>& vm, std::uint64_t seed = 1) {
+  auto t0 = std::chrono::steady_clock::now();
+  vm.locator = build_locator(vm.map, seed);
+  vm.locator_is_construction_tree = false;
+  vm.stats.locator_nodes = vm.locator.statistics().interior_nodes;
+  vm.stats.locator_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
 } // namespace detail
 
 /// Simplifies `vm` in place: removes every edge between faces with equal
 /// labels, so that each connected visible region is one face (its holes are
-/// further boundary cycles); V's leaves follow their faces.
+/// further boundary cycles); the locator is rebuilt (or, for the
+/// construction tree, its leaves follow their faces).
 template <geometry::number FT> void simplify(visibility_map<FT>& vm);
 
 /// Builds the visibility map of `polygons` seen from `eye`.
@@ -261,36 +317,53 @@ visibility_map<FT> build(std::vector<polygon<FT>> const& polygons, geometry::e3:
   }
 
   // 2. The depth-order tree.
-  auto tree = bsp::build_depth_order<K3>(std::move(input), bsp::balanced(geometry::e3::axis_median_cut<FT>{}, options.seed));
+  auto t_depth = std::chrono::steady_clock::now();
+  auto tree = bsp::build_depth_order<K3>(std::move(input), bsp::few_splits(geometry::e3::axis_median_cut<FT>{}, options.seed));
+  st.depth_order_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_depth).count();
 
-  // 3. Front to back: each fragment into V.
-  vm.v = typename visibility_map<FT>::v_tree(index{0});
-  detail::prepare(vm, options);
+  // 3. Front to back: each fragment into the coverage tree.  Over double the
+  // locator stays the construction tree: cutting the map's arcs out of their
+  // circles would round constructed bounds.
+  bool const keep_tree = options.keep_construction_tree || std::is_same_v<FT, double>;
+  detail::coverage<FT> v(index{0}, !keep_tree);
   auto& m = vm.map;
-  auto& v = vm.v;
+  detail::prepare(m, v, options);
   std::size_t total = 0, next_report = 0;
   if (options.progress) {
     bsp::for_each_front_to_back(tree, eye, [&](auto const&) { ++total; });
     options.progress(0.0);
   }
-  struct work {
-    bsp::node_id n, parent;
-    int side;
-    std::vector<detail::sphere_bound<FT>> frag;
-  };
-  std::vector<work> stack;
+  using fragment = std::vector<detail::sphere_bound<FT>>;
+  using place = typename detail::coverage<FT>::place;
   std::vector<sign> signs;
-  // Circles: those of V's nodes, each with its opposite, for as long as the
-  // build runs, and those of the fragment being inserted.
+  // Circles: those of the tree's nodes, each with its opposite, for as long
+  // as the build runs, and those of the fragment being inserted.
   detail::circle_store<FT> node_circles, fragment_circles;
-  std::vector<std::array<s2::hyperplane<FT> const*, 2>> v_circles; // V's interior node i: its circle and the opposite
+  std::vector<std::array<s2::hyperplane<FT> const*, 2>> v_circles; // interior node i: its circle and the opposite
   auto keep_circle = [&](bsp::node_id node, s2::hyperplane<FT> const& c) {
     if (v_circles.size() <= node.index()) v_circles.resize(node.index() + 1);
     auto const* pos = &node_circles.emplace_back(c);
     v_circles[node.index()] = {pos, &node_circles.emplace_back(c.opposite())};
   };
-  for (std::uint32_t i = 0; i < v.interior_count(); ++i)
-    keep_circle(bsp::node_id::interior(i), v.splitter(bsp::node_id::interior(i)));
+  for (std::uint32_t i = 0; i < v.as_tree().interior_count(); ++i)
+    keep_circle(bsp::node_id::interior(i), v.as_tree().splitter(bsp::node_id::interior(i)));
+  // A fragment at a node: split when the circle crosses it, else passed on
+  // whole, and then an edge lying in the circle is in the tree already (the
+  // paper's flag reset).
+  auto route = [&](fragment& frag, bsp::node_id n) -> bsp::routed<fragment> {
+    auto const& g = v_circles[n.index()];
+    int where = geometry::detail::polygon_side(frag, g[0]->n, signs);
+    if (where == 0) {
+      detail::sphere_bound<FT> hp{g[0], false}, hn{g[1], false};
+      auto r = geometry::detail::split_polygon_across(frag, hp, hn, signs);
+      return {0, std::move(r.negative), std::move(r.positive)};
+    }
+    std::size_t k = frag.size();
+    if (signs.size() == k)
+      for (std::size_t i = 0; i < k; ++i)
+        if (signs[i] == sign::zero && signs[(i + k - 1) % k] == sign::zero) frag[i].flag = false;
+    return {where, std::nullopt, std::nullopt};
+  };
   bsp::for_each_front_to_back(tree, eye, [&](auto const& fr) {
     ++st.fragments;
     if (options.progress && st.fragments >= next_report) {
@@ -298,56 +371,38 @@ visibility_map<FT> build(std::vector<polygon<FT>> const& polygons, geometry::e3:
       next_report = st.fragments + total / 100 + 1;
     }
     fragment_circles.clear();
-    stack.push_back({v.root(), bsp::node_id{}, 0, detail::project(fr.piece, eye, fragment_circles)});
-    while (!stack.empty()) {
-      work w = std::move(stack.back());
-      stack.pop_back();
-      if (!v.is_leaf(w.n)) {
-        auto const& g = v_circles[w.n.index()];
-        int where = geometry::detail::polygon_side(w.frag, g[0]->n, signs);
-        if (where == 0) {
-          detail::sphere_bound<FT> hp{g[0], false}, hn{g[1], false};
-          auto r = geometry::detail::split_polygon_across(w.frag, hp, hn, signs);
-          stack.push_back({v.negative(w.n), w.n, -1, std::move(*r.negative)});
-          stack.push_back({v.positive(w.n), w.n, +1, std::move(*r.positive)});
-          continue;
-        }
-        // Not split, so passed on whole: an edge lying in g is in V already
-        // (the paper's flag reset).
-        std::size_t k = w.frag.size();
-        if (signs.size() == k)
-          for (std::size_t i = 0; i < k; ++i)
-            if (signs[i] == sign::zero && signs[(i + k - 1) % k] == sign::zero) w.frag[i].flag = false;
-        stack.push_back({where < 0 ? v.negative(w.n) : v.positive(w.n), w.n, where, std::move(w.frag)});
-        continue;
-      }
-      index f = v.leaf_data(w.n);
-      if (m.faces()[f].label != -1) {
-        ++st.hidden_pieces;
-        continue;
-      }
-      // Visible: the flagged edges cut the leaf's face, each adding a node to V.
-      bsp::node_id parent = w.parent;
-      int side = w.side;
-      for (auto const& b : w.frag) {
+    // Visible where it reaches a free leaf: the flagged edges cut the leaf's
+    // face, each adding a node, and the cell inside is covered.
+    auto visit = [&](fragment&& frag, bsp::node_id leaf, place at) {
+      index f = v.as_tree().leaf_data(leaf);
+      for (auto const& b : frag) {
         if (!b.flag || !detail::cuts(m, f, *b.c)) continue;
         index c = m.add_circle(*b.c, detail::provenance_of(*b.c));
         index g = m.faces()[f].edge == none ? m.make_first_circle(c) : m.split_face(f, c);
-        bsp::node_id neg = v.add_leaf(g), pos = v.add_leaf(f);
-        bsp::node_id node = v.add_interior(*b.c, neg, pos);
+        bsp::node_id node = v.split(at, *b.c, g, f);
         keep_circle(node, *b.c);
-        v.attach(parent, side, node);
-        parent = node;
-        side = +1;
+        at = {node, +1};
+        leaf = v.as_tree().positive(node);
       }
       m.face_at(f).label = fr.id;
-    }
+      v.cover(at, leaf);
+    };
+    st.hidden_pieces += v.insert(detail::project(fr.piece, eye, fragment_circles), route, visit);
   });
-  st.v_nodes = v.statistics().interior_nodes;
+  st.v_nodes = v.interior_nodes();
+  st.v_nodes_peak = v.peak_interior_nodes();
   st.unsimplified = {m.vertices().size(), m.half_edges().size() / 2, m.faces().size()};
   st.simplified = st.unsimplified;
   if (options.progress) options.progress(1.0);
-  if (options.simplify) simplify(vm);
+  if (keep_tree) {
+    vm.locator = std::move(v).release();
+    vm.locator_is_construction_tree = true;
+    st.locator_nodes = st.v_nodes;
+  }
+  if (options.simplify)
+    simplify(vm);
+  else if (!keep_tree)
+    detail::rebuild_locator(vm, options.seed);
   st.filter_fallbacks = filter_stats().fallbacks - fallbacks0;
   st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return vm;
@@ -473,11 +528,15 @@ template <geometry::number FT> void simplify(visibility_map<FT>& vm) {
     if (out_faces[edges[e].face].edge == none) out_faces[edges[e].face].edge = e;
   detail::merge_collinear<FT>(vertices, edges, out_faces, m);
   m.assign(std::move(vertices), std::move(edges), std::move(out_faces));
-  // V's leaves follow their faces.
-  for_each_node(vm.v, vm.v.root(), [&](bsp::node_id n, std::size_t) {
-    if (vm.v.is_leaf(n)) vm.v.leaf_data(n) = new_face[vm.v.leaf_data(n)];
-  });
   vm.stats.simplified = {m.vertices().size(), m.half_edges().size() / 2, m.faces().size()};
+  if (vm.locator_is_construction_tree) {
+    // The construction tree's leaves follow their faces.
+    for_each_node(vm.locator, vm.locator.root(), [&](bsp::node_id n, std::size_t) {
+      if (vm.locator.is_leaf(n)) vm.locator.leaf_data(n) = new_face[vm.locator.leaf_data(n)];
+    });
+  } else {
+    detail::rebuild_locator(vm);
+  }
 }
 
 } // namespace svm

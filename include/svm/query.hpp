@@ -9,12 +9,14 @@
 
 namespace svm {
 
-/// The face of T seen in direction `d` (descending V; a direction on an edge
-/// of V gets the face on the edge's positive side).
+/// The face of T seen in direction `d` (descending the locator; a direction
+/// on a node's circle goes to its positive side, so a direction on an edge
+/// of T gets one of the faces it bounds).
 template <geometry::number FT> index locate_face(visibility_map<FT> const& vm, geometry::s2::point<FT> const& d) {
-  auto n = vm.v.root();
-  while (!vm.v.is_leaf(n)) n = vm.v.child(n, geometry::s2::side(vm.v.splitter(n), d) == geometry::oriented_side::negative ? -1 : +1);
-  return vm.v.leaf_data(n);
+  auto const& t = vm.locator;
+  auto n = t.root();
+  while (!t.is_leaf(n)) n = t.child(n, geometry::s2::side(t.splitter(n), d) == geometry::oriented_side::negative ? -1 : +1);
+  return t.leaf_data(n);
 }
 
 /// The input face visible in direction `d`, or −1.

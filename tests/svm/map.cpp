@@ -247,6 +247,69 @@ TEST_CASE("the visibility map agrees with an exact ray caster", "[svm]") {
   CHECK(compared > 150000);
 }
 
+TEST_CASE("the coverage tree and the map's locator answer as the paper's tree V does", "[svm][locate]") {
+  // The same scenes built twice: with the coverage tree (covered siblings
+  // collapse) and a locator built from the final map, and with the paper's
+  // tree V kept as the locator.  The map T must be the same, half-edge for
+  // half-edge, and every direction located in the same face, except where it
+  // lies exactly on an edge between the two faces found.
+  long compared = 0, on_edges = 0;
+  std::size_t hidden_new = 0, hidden_old = 0, nodes_new = 0, nodes_old = 0;
+  auto same_map = [](auto const& a, auto const& b) {
+    auto const &x = a.map, &y = b.map;
+    REQUIRE(x.half_edges().size() == y.half_edges().size());
+    REQUIRE(x.faces().size() == y.faces().size());
+    REQUIRE(x.vertices().size() == y.vertices().size());
+    bool same = true;
+    for (svm::index e = 0; e < x.half_edges().size(); ++e) {
+      auto const &p = x.half_edges()[e], &q = y.half_edges()[e];
+      same = same && p.origin == q.origin && p.next == q.next && p.face == q.face && p.circle == q.circle;
+    }
+    for (svm::index f = 0; f < x.faces().size(); ++f) same = same && x.faces()[f].label == y.faces()[f].label;
+    CHECK(same);
+  };
+  auto check_scene = [&](std::vector<svm::polygon<Q>> const& polys, e3::point<Q> const& eye, bool simplify) {
+    auto now = svm::build<Q>(polys, eye, {.simplify = simplify});
+    auto paper = svm::build<Q>(polys, eye, {.simplify = simplify, .keep_construction_tree = true});
+    same_map(now, paper);
+    CHECK(now.stats.hidden_pieces <= paper.stats.hidden_pieces);
+    CHECK(now.stats.v_nodes <= paper.stats.v_nodes);
+    CHECK(now.stats.v_nodes_peak <= paper.stats.v_nodes);
+    CHECK(now.stats.locator_nodes == now.locator.statistics().interior_nodes);
+    hidden_new += now.stats.hidden_pieces, hidden_old += paper.stats.hidden_pieces;
+    nodes_new += now.stats.v_nodes, nodes_old += paper.stats.v_nodes;
+    auto const& m = now.map;
+    for (int r = 0; r < 10000; ++r) {
+      ivec d = rp(1000);
+      if (d == ivec{0, 0, 0}) continue;
+      s2::point<Q> dq(std::array<Q, 3>{Q(d[0]), Q(d[1]), Q(d[2])});
+      svm::index a = svm::locate_face(now, dq), b = svm::locate_face(paper, dq);
+      ++compared;
+      if (a == b) continue;
+      // Allowed only on an edge between a and b.
+      bool between = false;
+      for (svm::index e = 0; e < m.half_edges().size() && !between; ++e)
+        between = m.face_of(e) == a && m.face_of(m.twin(e)) == b &&
+                  geometry::s2::side(m.circles()[m.half_edges()[e].circle], dq) == oriented_side::on;
+      CHECK(between);
+      ++on_edges;
+    }
+  };
+  for (int t = 0; t < 36; ++t) {
+    auto sc = make_scene(t % 6);
+    if (sc.tris.empty()) continue;
+    INFO("scene " << t << ", family " << t % 6);
+    check_scene(polygons_of(sc.tris), e3::point<Q>(Q(sc.eye[0]), Q(sc.eye[1]), Q(sc.eye[2])), t % 2 == 0);
+  }
+  for (auto const& sc : {svm::scenes::bricks(16), svm::scenes::hidden_bricks(16), svm::scenes::platforms(8), svm::scenes::random_cubes(16, 3)})
+    for (bool simplify : {true, false}) check_scene(sc.polygons, sc.eye, simplify);
+  std::cout << "locate: " << compared << " directions, " << on_edges << " on edges with another face; hidden pieces "
+            << hidden_new << " against " << hidden_old << ", tree nodes " << nodes_new << " against " << nodes_old << "\n";
+  CHECK(compared > 300000);
+  CHECK(hidden_new < hidden_old);
+  CHECK(nodes_new < nodes_old);
+}
+
 TEST_CASE("the paper's scene families: map sizes, and Platforms linear once simplified", "[svm][scenes]") {
   std::vector<std::size_t> sizes{4, 8, 16};
   std::vector<svm::map_size> platforms, raw_platforms;
