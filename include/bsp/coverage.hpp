@@ -10,6 +10,7 @@
 /// covered region.
 #pragma once
 
+#include "point_set.hpp"
 #include "tree.hpp"
 
 #include <cstddef>
@@ -137,10 +138,65 @@ public:
   std::size_t interior_nodes() const noexcept { return interior_; }
   std::size_t peak_interior_nodes() const noexcept { return peak_; }
 
+  /// Rebuilds the tree from the boundary of the covered region: Thibault and
+  /// Naylor's build in the order `policy` chooses, then `bsp::reduce`.  The
+  /// covered set stays the same; the cuts that earlier insertions left
+  /// through the free space and through the covered region are gone.  Every
+  /// leaf's payload becomes `L{}`, so this is for trees whose free leaves
+  /// carry nothing that the caller still needs.
+  template <class Policy> void rebuild(Policy policy) {
+    point_set<G, bool> labelled(false);
+    copy(tree_, labelled, [&](node_id leaf) { return is_covered(leaf); });
+    labelled = reduce(labelled);
+    if (!labelled.is_leaf(labelled.root()))
+      labelled = reduce(build_point_set<G, bool>(oriented_boundary(labelled), true, false, std::move(policy)));
+    tree_ = tree_type(L{});
+    covered_.assign(1, 0);
+    up_.clear();
+    interior_ = 0;
+    // Top-down, each node hung at its place.
+    std::vector<std::pair<node_id, place>> stack{{labelled.root(), place{}}};
+    while (!stack.empty()) {
+      auto [n, at] = stack.back();
+      stack.pop_back();
+      if (labelled.is_leaf(n)) {
+        node_id leaf = add_leaf(L{});
+        covered_[leaf.index()] = labelled.leaf_data(n) ? 1 : 0;
+        tree_.attach(at.parent, at.side, leaf);
+        continue;
+      }
+      node_id m = tree_.add_interior(labelled.splitter(n), node_id{}, node_id{});
+      if (up_.size() <= m.index()) up_.resize(m.index() + 1);
+      up_[m.index()] = at;
+      tree_.attach(at.parent, at.side, m);
+      ++interior_;
+      stack.push_back({labelled.negative(n), {m, -1}});
+      stack.push_back({labelled.positive(n), {m, +1}});
+    }
+    if (interior_ > peak_) peak_ = interior_;
+  }
+
   /// The tree, leaving this one empty.
   tree_type release() && { return std::move(tree_); }
 
 private:
+  /// Copies the shape of `from` into the empty tree `to`, leaf labels from `label(leaf)`.
+  template <class From, class To, class Label> static void copy(From const& from, To& to, Label&& label) {
+    std::vector<std::pair<node_id, place>> stack{{from.root(), place{}}};
+    while (!stack.empty()) {
+      auto [n, at] = stack.back();
+      stack.pop_back();
+      if (from.is_leaf(n)) {
+        to.attach(at.parent, at.side, to.add_leaf(label(n)));
+        continue;
+      }
+      node_id m = to.add_interior(from.splitter(n), node_id{}, node_id{});
+      to.attach(at.parent, at.side, m);
+      stack.push_back({from.negative(n), {m, -1}});
+      stack.push_back({from.positive(n), {m, +1}});
+    }
+  }
+
   node_id add_leaf(L d) {
     node_id n = tree_.add_leaf(std::move(d));
     covered_.push_back(0);

@@ -19,11 +19,13 @@
 #include <boost/pending/disjoint_sets.hpp>
 #include <geometry/e3.hpp>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <deque>
 #include <cmath>
 #include <functional>
+#include <random>
 #include <stdexcept>
 #include <type_traits>
 
@@ -84,6 +86,10 @@ struct build_statistics {
   std::size_t locator_nodes = 0;      ///< interior nodes of the tree that locates directions
   double locator_seconds = 0;         ///< building it
   double depth_order_seconds = 0;     ///< building the depth-order tree
+  std::size_t rebuilds = 0;           ///< of the coverage tree from its covered boundary
+  std::size_t visible_pieces = 0;     ///< fragment pieces found visible (the map is made of them)
+  std::size_t overlapping_pieces = 0; ///< visible pieces that met another's cell in the map: always 0
+  std::size_t map_tree_nodes = 0;     ///< interior nodes of the tree that cut the map
   map_size unsimplified, simplified;
   std::uint64_t filter_fallbacks = 0;
   double seconds = 0;
@@ -187,6 +193,55 @@ template <geometry::number FT> void cut_everywhere(dcel<FT>& m, coverage<FT>& v,
     index g = m.faces()[f].edge == none ? m.make_first_circle(ci) : m.split_face(f, ci);
     v.split(at, c, g, f);
   }
+}
+
+/// The circles of a tree's nodes, each with its opposite, stored once where
+/// they stay put; `of[i]` for interior node i.  Fragments split at a node
+/// take their new bounds from here.
+template <geometry::number FT> struct node_circles {
+  circle_store<FT> store;
+  std::vector<std::array<geometry::s2::hyperplane<FT> const*, 2>> of;
+  void keep(bsp::node_id node, geometry::s2::hyperplane<FT> const& c) {
+    if (of.size() <= node.index()) of.resize(node.index() + 1);
+    auto const* pos = &store.emplace_back(c);
+    of[node.index()] = {pos, &store.emplace_back(c.opposite())};
+  }
+  /// Every interior node of `t` (after a new tree replaced the old one).
+  template <class Tree> void refresh(Tree const& t) {
+    of.clear();
+    for (std::uint32_t i = 0; i < t.interior_count(); ++i) keep(bsp::node_id::interior(i), t.splitter(bsp::node_id::interior(i)));
+  }
+};
+
+/// A fragment at a node whose circle is `g[0]` (`g[1]` its opposite): split
+/// when the circle crosses it, else passed on whole, and then an edge lying
+/// in the circle is in the tree already (the paper's flag reset).
+template <geometry::number FT>
+bsp::routed<std::vector<sphere_bound<FT>>> route(std::vector<sphere_bound<FT>>& frag,
+                                                  std::array<geometry::s2::hyperplane<FT> const*, 2> const& g,
+                                                  std::vector<geometry::sign>& signs) {
+  using geometry::sign;
+  int where = geometry::detail::polygon_side(frag, g[0]->n, signs);
+  if (where == 0) {
+    sphere_bound<FT> hp{g[0], false}, hn{g[1], false};
+    auto r = geometry::detail::split_polygon_across(frag, hp, hn, signs);
+    return {0, std::move(r.negative), std::move(r.positive)};
+  }
+  std::size_t k = frag.size();
+  if (signs.size() == k)
+    for (std::size_t i = 0; i < k; ++i)
+      if (signs[i] == sign::zero && signs[(i + k - 1) % k] == sign::zero) frag[i].flag = false;
+  return {where, std::nullopt, std::nullopt};
+}
+
+/// Whether edge `i` of the spherical polygon `frag` has positive length: its
+/// circle is not concurrent with its neighbours' (for three bounds or more;
+/// a hemisphere's circle and a lune's half circles always are), and not zero.
+template <geometry::number FT> bool proper_edge(std::vector<sphere_bound<FT>> const& frag, std::size_t i) {
+  std::size_t k = frag.size();
+  auto const& c = frag[i].line();
+  if (k <= 2) return !(c[0] == 0 && c[1] == 0 && c[2] == 0);
+  return det_sign(frag[(i + k - 1) % k].line(), c, frag[(i + 1) % k].line()) != geometry::sign::zero;
 }
 
 /// Whether face `f` (a cell not crossed by `c`) lies on the positive side of `c`.
@@ -321,84 +376,129 @@ visibility_map<FT> build(std::vector<polygon<FT>> const& polygons, geometry::e3:
   auto tree = bsp::build_depth_order<K3>(std::move(input), bsp::few_splits(geometry::e3::axis_median_cut<FT>{}, options.seed));
   st.depth_order_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_depth).count();
 
-  // 3. Front to back: each fragment into the coverage tree.  Over double the
-  // locator stays the construction tree: cutting the map's arcs out of their
-  // circles would round constructed bounds.
-  bool const keep_tree = options.keep_construction_tree || std::is_same_v<FT, double>;
-  detail::coverage<FT> v(index{0}, !keep_tree);
+  // 3. Front to back: each fragment into a coverage tree.
+  using fragment = std::vector<detail::sphere_bound<FT>>;
+  using place = typename detail::coverage<FT>::place;
   auto& m = vm.map;
-  detail::prepare(m, v, options);
+  std::vector<sign> signs;
   std::size_t total = 0, next_report = 0;
   if (options.progress) {
     bsp::for_each_front_to_back(tree, eye, [&](auto const&) { ++total; });
     options.progress(0.0);
   }
-  using fragment = std::vector<detail::sphere_bound<FT>>;
-  using place = typename detail::coverage<FT>::place;
-  std::vector<sign> signs;
-  // Circles: those of the tree's nodes, each with its opposite, for as long
-  // as the build runs, and those of the fragment being inserted.
-  detail::circle_store<FT> node_circles, fragment_circles;
-  std::vector<std::array<s2::hyperplane<FT> const*, 2>> v_circles; // interior node i: its circle and the opposite
-  auto keep_circle = [&](bsp::node_id node, s2::hyperplane<FT> const& c) {
-    if (v_circles.size() <= node.index()) v_circles.resize(node.index() + 1);
-    auto const* pos = &node_circles.emplace_back(c);
-    v_circles[node.index()] = {pos, &node_circles.emplace_back(c.opposite())};
-  };
-  for (std::uint32_t i = 0; i < v.as_tree().interior_count(); ++i)
-    keep_circle(bsp::node_id::interior(i), v.as_tree().splitter(bsp::node_id::interior(i)));
-  // A fragment at a node: split when the circle crosses it, else passed on
-  // whole, and then an edge lying in the circle is in the tree already (the
-  // paper's flag reset).
-  auto route = [&](fragment& frag, bsp::node_id n) -> bsp::routed<fragment> {
-    auto const& g = v_circles[n.index()];
-    int where = geometry::detail::polygon_side(frag, g[0]->n, signs);
-    if (where == 0) {
-      detail::sphere_bound<FT> hp{g[0], false}, hn{g[1], false};
-      auto r = geometry::detail::split_polygon_across(frag, hp, hn, signs);
-      return {0, std::move(r.negative), std::move(r.positive)};
-    }
-    std::size_t k = frag.size();
-    if (signs.size() == k)
-      for (std::size_t i = 0; i < k; ++i)
-        if (signs[i] == sign::zero && signs[(i + k - 1) % k] == sign::zero) frag[i].flag = false;
-    return {where, std::nullopt, std::nullopt};
-  };
-  bsp::for_each_front_to_back(tree, eye, [&](auto const& fr) {
-    ++st.fragments;
+  auto report = [&] {
     if (options.progress && st.fragments >= next_report) {
       options.progress(static_cast<double>(st.fragments - 1) / static_cast<double>(total));
       next_report = st.fragments + total / 100 + 1;
     }
-    fragment_circles.clear();
-    // Visible where it reaches a free leaf: the flagged edges cut the leaf's
-    // face, each adding a node, and the cell inside is covered.
-    auto visit = [&](fragment&& frag, bsp::node_id leaf, place at) {
+  };
+  // Visible where it reaches a free leaf of `v`, whose payload is a face of
+  // the map: the flagged edges cut the face, each adding a node, and the cell
+  // inside is covered and labelled `label`.
+  auto into_map = [&](detail::coverage<FT>& v, detail::node_circles<FT>& nc, fragment frag, std::int64_t label) {
+    auto visit = [&](fragment&& piece, bsp::node_id leaf, place at) {
       index f = v.as_tree().leaf_data(leaf);
-      for (auto const& b : frag) {
+      for (auto const& b : piece) {
         if (!b.flag || !detail::cuts(m, f, *b.c)) continue;
         index c = m.add_circle(*b.c, detail::provenance_of(*b.c));
         index g = m.faces()[f].edge == none ? m.make_first_circle(c) : m.split_face(f, c);
         bsp::node_id node = v.split(at, *b.c, g, f);
-        keep_circle(node, *b.c);
+        nc.keep(node, *b.c);
         at = {node, +1};
         leaf = v.as_tree().positive(node);
       }
-      m.face_at(f).label = fr.id;
+      m.face_at(f).label = label;
       v.cover(at, leaf);
     };
-    st.hidden_pieces += v.insert(detail::project(fr.piece, eye, fragment_circles), route, visit);
-  });
-  st.v_nodes = v.interior_nodes();
-  st.v_nodes_peak = v.peak_interior_nodes();
-  st.unsimplified = {m.vertices().size(), m.half_edges().size() / 2, m.faces().size()};
-  st.simplified = st.unsimplified;
-  if (options.progress) options.progress(1.0);
+    return v.insert(std::move(frag), [&](fragment& p, bsp::node_id n) { return detail::route(p, nc.of[n.index()], signs); }, visit);
+  };
+  // Over double, and when asked, one pass as the paper's: the coverage tree's
+  // leaves are the map's faces, and it stays the locator.  (Over double,
+  // cutting the map's arcs out of their circles would round constructed bounds.)
+  bool const keep_tree = options.keep_construction_tree || std::is_same_v<FT, double>;
   if (keep_tree) {
+    detail::coverage<FT> v(index{0}, false);
+    detail::prepare(m, v, options);
+    detail::node_circles<FT> nc;
+    nc.refresh(v.as_tree());
+    detail::circle_store<FT> fragment_circles;
+    bsp::for_each_front_to_back(tree, eye, [&](auto const& fr) {
+      ++st.fragments;
+      report();
+      fragment_circles.clear();
+      st.hidden_pieces += into_map(v, nc, detail::project(fr.piece, eye, fragment_circles), fr.id);
+    });
+    st.v_nodes = st.v_nodes_peak = st.map_tree_nodes = v.interior_nodes();
     vm.locator = std::move(v).release();
     vm.locator_is_construction_tree = true;
     st.locator_nodes = st.v_nodes;
+  } else {
+    // Pass 1: what is visible.  The coverage tree knows only covered and
+    // free; each visible piece is kept, its flagged edges bound the cell it
+    // covers, and when the tree has doubled it is rebuilt from the boundary
+    // of the covered region, so that what was cut through the free space and
+    // through the covered region goes.
+    detail::coverage<FT> cover(index{0}, true);
+    {
+      dcel<FT> scratch;
+      detail::prepare(scratch, cover, options);
+    }
+    detail::node_circles<FT> nc;
+    nc.refresh(cover.as_tree());
+    detail::circle_store<FT> circles; // every fragment's, for both passes
+    struct visible_piece {
+      fragment bounds;
+      std::int64_t label;
+    };
+    std::vector<visible_piece> visible;
+    std::size_t const least_rebuild = 256;
+    std::size_t limit = std::max(least_rebuild, 2 * cover.interior_nodes());
+    bsp::for_each_front_to_back(tree, eye, [&](auto const& fr) {
+      ++st.fragments;
+      report();
+      auto visit = [&](fragment&& piece, bsp::node_id leaf, place at) {
+        std::size_t k = piece.size();
+        for (std::size_t i = 0; i < k; ++i) {
+          auto const& b = piece[i];
+          // An edge not lying in a circle of the path, of positive length:
+          // its circle cuts the cell (`detail::proper_edge`).
+          if (!b.flag || !detail::proper_edge(piece, i)) continue;
+          bsp::node_id node = cover.split(at, *b.c, index{0}, index{0});
+          nc.keep(node, *b.c);
+          at = {node, +1};
+          leaf = cover.as_tree().positive(node);
+        }
+        cover.cover(at, leaf);
+        visible.push_back({std::move(piece), fr.id});
+      };
+      st.hidden_pieces += cover.insert(detail::project(fr.piece, eye, circles), [&](fragment& p, bsp::node_id n) { return detail::route(p, nc.of[n.index()], signs); }, visit);
+      if (cover.interior_nodes() > limit) {
+        cover.rebuild(bsp::random_order(options.seed + st.rebuilds));
+        nc.refresh(cover.as_tree());
+        ++st.rebuilds;
+        limit = std::max(least_rebuild, 2 * cover.interior_nodes());
+      }
+    });
+    st.v_nodes = cover.interior_nodes();
+    st.v_nodes_peak = cover.peak_interior_nodes();
+    st.visible_pieces = visible.size();
+    // Pass 2: the map from the visible pieces, which do not overlap, in
+    // random order (the tree's cuts then stay few), every edge flagged again.
+    std::mt19937_64 rng(options.seed);
+    std::shuffle(visible.begin(), visible.end(), rng);
+    detail::coverage<FT> v(index{0}, true);
+    detail::prepare(m, v, options);
+    detail::node_circles<FT> mc;
+    mc.refresh(v.as_tree());
+    for (auto& p : visible) {
+      for (auto& b : p.bounds) b.flag = true;
+      st.overlapping_pieces += into_map(v, mc, std::move(p.bounds), p.label);
+    }
+    st.map_tree_nodes = v.peak_interior_nodes();
   }
+  st.unsimplified = {m.vertices().size(), m.half_edges().size() / 2, m.faces().size()};
+  st.simplified = st.unsimplified;
+  if (options.progress) options.progress(1.0);
   if (options.simplify)
     simplify(vm);
   else if (!keep_tree)

@@ -248,48 +248,41 @@ TEST_CASE("the visibility map agrees with an exact ray caster", "[svm]") {
 }
 
 TEST_CASE("the coverage tree and the map's locator answer as the paper's tree V does", "[svm][locate]") {
-  // The same scenes built twice: with the coverage tree (covered siblings
-  // collapse) and a locator built from the final map, and with the paper's
-  // tree V kept as the locator.  The map T must be the same, half-edge for
-  // half-edge, and every direction located in the same face, except where it
-  // lies exactly on an edge between the two faces found.
+  // The same scenes built twice: in two passes (a coverage tree that is
+  // rebuilt from its covered boundary finds the visible pieces, then the map
+  // is made of them) with a locator built from the final map, and in the
+  // paper's one pass with its tree V kept as the locator.  Every direction
+  // must see the same polygon, except where it lies exactly on an edge
+  // between the two answers; simplified, the two maps have the same size.
   long compared = 0, on_edges = 0;
   std::size_t hidden_new = 0, hidden_old = 0, nodes_new = 0, nodes_old = 0;
-  auto same_map = [](auto const& a, auto const& b) {
-    auto const &x = a.map, &y = b.map;
-    REQUIRE(x.half_edges().size() == y.half_edges().size());
-    REQUIRE(x.faces().size() == y.faces().size());
-    REQUIRE(x.vertices().size() == y.vertices().size());
-    bool same = true;
-    for (svm::index e = 0; e < x.half_edges().size(); ++e) {
-      auto const &p = x.half_edges()[e], &q = y.half_edges()[e];
-      same = same && p.origin == q.origin && p.next == q.next && p.face == q.face && p.circle == q.circle;
-    }
-    for (svm::index f = 0; f < x.faces().size(); ++f) same = same && x.faces()[f].label == y.faces()[f].label;
-    CHECK(same);
-  };
   auto check_scene = [&](std::vector<svm::polygon<Q>> const& polys, e3::point<Q> const& eye, bool simplify) {
     auto now = svm::build<Q>(polys, eye, {.simplify = simplify});
     auto paper = svm::build<Q>(polys, eye, {.simplify = simplify, .keep_construction_tree = true});
-    same_map(now, paper);
+    check_map(now, simplify);
+    CHECK(now.stats.overlapping_pieces == 0);
     CHECK(now.stats.hidden_pieces <= paper.stats.hidden_pieces);
-    CHECK(now.stats.v_nodes <= paper.stats.v_nodes);
     CHECK(now.stats.v_nodes_peak <= paper.stats.v_nodes);
     CHECK(now.stats.locator_nodes == now.locator.statistics().interior_nodes);
+    if (simplify) {
+      CHECK(now.stats.simplified.faces == paper.stats.simplified.faces);
+      CHECK(now.stats.simplified.edges == paper.stats.simplified.edges);
+      CHECK(now.stats.simplified.vertices == paper.stats.simplified.vertices);
+    }
     hidden_new += now.stats.hidden_pieces, hidden_old += paper.stats.hidden_pieces;
-    nodes_new += now.stats.v_nodes, nodes_old += paper.stats.v_nodes;
+    nodes_new += now.stats.v_nodes_peak, nodes_old += paper.stats.v_nodes;
     auto const& m = now.map;
     for (int r = 0; r < 10000; ++r) {
       ivec d = rp(1000);
       if (d == ivec{0, 0, 0}) continue;
       s2::point<Q> dq(std::array<Q, 3>{Q(d[0]), Q(d[1]), Q(d[2])});
-      svm::index a = svm::locate_face(now, dq), b = svm::locate_face(paper, dq);
+      auto a = svm::locate(now, dq), b = svm::locate(paper, dq);
       ++compared;
       if (a == b) continue;
-      // Allowed only on an edge between a and b.
+      // Allowed only on an edge of the map between the two answers.
       bool between = false;
       for (svm::index e = 0; e < m.half_edges().size() && !between; ++e)
-        between = m.face_of(e) == a && m.face_of(m.twin(e)) == b &&
+        between = m.faces()[m.face_of(e)].label == a && m.faces()[m.face_of(m.twin(e))].label == b &&
                   geometry::s2::side(m.circles()[m.half_edges()[e].circle], dq) == oriented_side::on;
       CHECK(between);
       ++on_edges;
@@ -303,8 +296,8 @@ TEST_CASE("the coverage tree and the map's locator answer as the paper's tree V 
   }
   for (auto const& sc : {svm::scenes::bricks(16), svm::scenes::hidden_bricks(16), svm::scenes::platforms(8), svm::scenes::random_cubes(16, 3)})
     for (bool simplify : {true, false}) check_scene(sc.polygons, sc.eye, simplify);
-  std::cout << "locate: " << compared << " directions, " << on_edges << " on edges with another face; hidden pieces "
-            << hidden_new << " against " << hidden_old << ", tree nodes " << nodes_new << " against " << nodes_old << "\n";
+  std::cout << "locate: " << compared << " directions, " << on_edges << " on edges with another polygon; hidden pieces "
+            << hidden_new << " against " << hidden_old << ", largest coverage trees " << nodes_new << " nodes against V's " << nodes_old << "\n";
   CHECK(compared > 300000);
   CHECK(hidden_new < hidden_old);
   CHECK(nodes_new < nodes_old);
@@ -312,8 +305,10 @@ TEST_CASE("the coverage tree and the map's locator answer as the paper's tree V 
 
 TEST_CASE("the paper's scene families: map sizes, and Platforms linear once simplified", "[svm][scenes]") {
   std::vector<std::size_t> sizes{4, 8, 16};
-  std::vector<svm::map_size> platforms, raw_platforms;
+  std::vector<svm::map_size> platforms, raw_platforms, paper_platforms;
   for (std::size_t n : sizes) {
+    auto slabs = svm::scenes::platforms(n);
+    paper_platforms.push_back(svm::build<Q>(slabs.polygons, slabs.eye, {.keep_construction_tree = true}).stats.unsimplified);
     for (auto const& [name, sc] : {std::pair{"bricks", svm::scenes::bricks(n)}, std::pair{"hidden bricks", svm::scenes::hidden_bricks(n)},
                                    std::pair{"platforms", svm::scenes::platforms(n)}, std::pair{"random", svm::scenes::random_cubes(n, n)}}) {
       auto vm = svm::build<Q>(sc.polygons, sc.eye);
@@ -331,8 +326,12 @@ TEST_CASE("the paper's scene families: map sizes, and Platforms linear once simp
     CHECK(platforms[i].faces == sizes[i] + 1);
     CHECK(platforms[i].vertices <= 8 * sizes[i]);
   }
-  // Without simplification the partition lines of nearer slabs cut the farther ones: quadratic.
-  CHECK(raw_platforms[2].edges > 3 * raw_platforms[1].edges);
+  // In the paper's one pass the partition lines of nearer slabs cut the
+  // farther ones: quadratic before simplification.  Built from the visible
+  // pieces in random order, the map before simplification is smaller at n = 16
+  // (docs/benchmarks.md measures how much at larger n).
+  CHECK(paper_platforms[2].edges > 3 * paper_platforms[1].edges);
+  CHECK(raw_platforms[2].edges < paper_platforms[2].edges);
 }
 
 TEST_CASE("Boost.Graph on the map: components for Euler, visible regions per polygon", "[svm][graph]") {
