@@ -57,6 +57,10 @@ depth_order_tree<G, Id> build_depth_order(fragment_list<G, Id> input, Policy pol
     typename G::hyperplane h = d.cut ? std::move(*d.cut) : G::supporting(w.pieces[d.piece].piece);
     fragment_list<G, Id> here, neg, pos;
     for (auto& f : w.pieces) {
+      if (int side = detail::whole_side<G>(f.piece, h)) {
+        (side < 0 ? neg : pos).push_back(std::move(f));
+        continue;
+      }
       auto r = G::split(f.piece, h);
       if (r.is_coincident()) {
         here.push_back(std::move(f));

@@ -121,9 +121,9 @@ template <class Cutter> struct balanced {
 /// pieces, it takes the one with the least `split_weight` × splits +
 /// imbalance among those leaving at least one piece in `min_share` on each
 /// side.  When no candidate is that balanced (a convex surface, whose
-/// autopartition is a chain n deep), it asks `cutter(pieces)` for a free
-/// hyperplane and takes it if that is balanced; failing that, the candidate
-/// with the fewest splits.  At or below `threshold` pieces, of
+/// autopartition is a chain n deep), it asks `cutter` for a free hyperplane
+/// for the sampled pieces and takes it if that is balanced; failing that, the
+/// candidate with the fewest splits.  At or below `threshold` pieces, of
 /// `small_samples` candidates scored on every piece, the one with the fewest
 /// splits (ties: the more even), and no free cut.  A depth-order tree built
 /// with it has few fragments per input polygon on scenes of boxes and slabs,
@@ -185,7 +185,12 @@ template <class Cutter> struct few_splits {
       if (balanced(s) && (!best_score || cost(s) < cost(*best_score))) best = c, best_score = s;
     }
     if (best_score) return {best, std::nullopt};
-    if (auto cut = cutter(items))
+    // The cutter sees the sampled pieces only: a median of a sample is near
+    // enough, and the cut is checked for balance on the sample anyway.
+    std::vector<Item> subset;
+    subset.reserve(m);
+    for (std::size_t i : sample) subset.push_back(items[i]);
+    if (auto cut = cutter(subset))
       if (balanced(count(*cut))) return {fewest, std::move(cut)};
     return {fewest, std::nullopt};
   }
