@@ -79,6 +79,7 @@ struct build_statistics {
   std::size_t input_polygons = 0;
   std::size_t discarded_edge_on = 0;  ///< plane through the eye: no area on the sphere
   std::size_t discarded_backfacing = 0;
+  std::size_t discarded_outside_window = 0; ///< wholly outside `build_options::window`
   std::size_t fragments = 0;          ///< of the depth-order tree
   std::size_t hidden_pieces = 0;      ///< fragment pieces that reached a covered leaf (or a clipped one)
   std::size_t v_nodes = 0;            ///< interior nodes of the coverage tree at the end of the build
@@ -355,8 +356,35 @@ visibility_map<FT> build(std::vector<polygon<FT>> const& polygons, geometry::e3:
   st.input_polygons = polygons.size();
 
   // 1. The polygons, their edge planes tagged as scene edges; discards.
+  // A polygon whose every vertex lies on the negative side of one of the
+  // window's circles, or on it, shows nothing inside the window: the cone of
+  // its directions is in that closed half-space.  (Exact: the circles' doubles
+  // are rationals.)
+  std::vector<hvec<FT, 4>> window;
+  for (auto const& n : options.window)
+    if (std::isfinite(n[0]) && std::isfinite(n[1]) && std::isfinite(n[2]) && !(n[0] == 0 && n[1] == 0 && n[2] == 0))
+      window.emplace_back(std::array<FT, 4>{FT(n[0]), FT(n[1]), FT(n[2]), FT(0)});
+  auto outside_window = [&](polygon<FT> const& p) {
+    auto toward = [](auto const& q, auto const& o, auto const& w) {
+      return (w[0] * q[0] + w[1] * q[1] + w[2] * q[2]) * o[3] - (w[0] * o[0] + w[1] * o[1] + w[2] * o[2]) * q[3];
+    };
+    for (auto const& w : window) {
+      bool all = true;
+      for (auto const& q : p.vertices)
+        if (filtered_sign(toward, q.homogeneous(), eye.homogeneous(), w) == sign::positive) {
+          all = false;
+          break;
+        }
+      if (all) return true;
+    }
+    return false;
+  };
   bsp::fragment_list<K3, std::uint32_t> input;
   for (auto const& p : polygons) {
+    if (!window.empty() && outside_window(p)) {
+      ++st.discarded_outside_window;
+      continue;
+    }
     auto s = e3::convex_polygon<FT>(p.vertices, p.face);
     auto side = e3::side(s.support, eye);
     if (side == oriented_side::on) {

@@ -6,6 +6,7 @@
 #include "../support.hpp"
 
 #include <catch2/catch.hpp>
+#include <svm/camera.hpp>
 #include <svm/query.hpp>
 #include <svm/graph.hpp>
 #include <svm/scenes.hpp>
@@ -301,6 +302,42 @@ TEST_CASE("the coverage tree and the map's locator answer as the paper's tree V 
   CHECK(compared > 300000);
   CHECK(hidden_new < hidden_old);
   CHECK(nodes_new < nodes_old);
+}
+
+TEST_CASE("a window leaves out the polygons wholly outside it, and nothing else", "[svm][window]") {
+  // Narrow frusta in random directions: inside the window the map answers as
+  // the map of all directions does; polygons wholly outside are discarded.
+  std::size_t discarded = 0, compared = 0;
+  for (auto const& sc : {svm::scenes::bricks(16), svm::scenes::random_cubes(32, 5), svm::scenes::platforms(8)}) {
+    auto full = svm::build<Q>(sc.polygons, sc.eye);
+    for (int k = 0; k < 6; ++k) {
+      ivec f = rp(100);
+      if (f == ivec{0, 0, 0}) continue;
+      svm::camera cam;
+      cam.forward = {double(f[0]), double(f[1]), double(f[2])};
+      cam.up = std::abs(f[2]) * 10 > std::abs(f[0]) + std::abs(f[1]) ? svm::vec3{1, 0, 0} : svm::vec3{0, 0, 1};
+      cam.hfov = 20 + 10 * k;
+      cam.width = cam.height = 100;
+      auto o = svm::projector(cam, svm::projection::perspective).window_options();
+      auto windowed = svm::build<Q>(sc.polygons, sc.eye, o);
+      check_map(windowed, true);
+      discarded += windowed.stats.discarded_outside_window;
+      CHECK(full.stats.discarded_outside_window == 0);
+      for (int r = 0; r < 500; ++r) {
+        ivec d = rp(1000);
+        bool inside = d != ivec{0, 0, 0};
+        for (auto const& w : o.window)
+          inside = inside && w[0] * double(d[0]) + w[1] * double(d[1]) + w[2] * double(d[2]) > 1e-9 * 1000 * (std::abs(w[0]) + std::abs(w[1]) + std::abs(w[2]));
+        if (!inside) continue;
+        s2::point<Q> dq(std::array<Q, 3>{Q(d[0]), Q(d[1]), Q(d[2])});
+        ++compared;
+        CHECK(svm::locate(windowed, dq) == svm::locate(full, dq));
+      }
+    }
+  }
+  std::cout << "window: " << discarded << " polygons discarded, " << compared << " directions compared\n";
+  CHECK(discarded > 100);
+  CHECK(compared > 200);
 }
 
 TEST_CASE("the paper's scene families: map sizes, and Platforms linear once simplified", "[svm][scenes]") {

@@ -138,6 +138,7 @@ template <class FT> json stats_json(svm::visibility_map<FT> const& vm, loaded co
           {"discarded_faces", st.discarded_edge_on + st.discarded_backfacing},
           {"discarded_edge_on", st.discarded_edge_on},
           {"discarded_backfacing", st.discarded_backfacing},
+          {"discarded_outside_window", st.discarded_outside_window},
           {"fragments", st.fragments},
           {"hidden_pieces", st.hidden_pieces},
           {"v_nodes", st.v_nodes},
