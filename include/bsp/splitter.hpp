@@ -112,7 +112,7 @@ template <class Cutter> struct balanced {
 
   Cutter cutter;
   std::size_t threshold;
-  std::size_t samples = 8, small_samples = 3, probe = 64, min_share = 8, split_weight = 4;
+  std::size_t samples = 4, probe = 32, min_share = 8;
   std::mt19937_64 rng;
 };
 

@@ -107,6 +107,7 @@ template <geometry::number FT> struct visibility_map {
   /// with `build_options::keep_construction_tree`.
   locator_tree locator;
   bool locator_is_construction_tree = false;
+  std::uint64_t seed = 1; ///< the build's seed, which the locator's splitter order also uses
   build_statistics stats;
 };
 
@@ -229,9 +230,15 @@ bsp::routed<std::vector<sphere_bound<FT>>> route(std::vector<sphere_bound<FT>>& 
     return {0, std::move(r.negative), std::move(r.positive)};
   }
   std::size_t k = frag.size();
-  if (signs.size() == k)
+  if (k <= 2) {
+    // A lune's vertices lie on every circle through them, and a hemisphere
+    // has none: an edge lies in g when its circle is g.
+    for (auto& b : frag)
+      if (geometry::parallel(b.line(), g[0]->n) != sign::zero) b.flag = false;
+  } else if (signs.size() == k) {
     for (std::size_t i = 0; i < k; ++i)
       if (signs[i] == sign::zero && signs[(i + k - 1) % k] == sign::zero) frag[i].flag = false;
+  }
   return {where, std::nullopt, std::nullopt};
 }
 
@@ -352,6 +359,7 @@ visibility_map<FT> build(std::vector<polygon<FT>> const& polygons, geometry::e3:
   auto t0 = std::chrono::steady_clock::now();
   auto fallbacks0 = filter_stats().fallbacks;
   visibility_map<FT> vm;
+  vm.seed = options.seed;
   auto& st = vm.stats;
   st.input_polygons = polygons.size();
 
@@ -360,10 +368,12 @@ visibility_map<FT> build(std::vector<polygon<FT>> const& polygons, geometry::e3:
   // window's circles, or on it, shows nothing inside the window: the cone of
   // its directions is in that closed half-space.  (Exact: the circles' doubles
   // are rationals.)
+  for (auto const* group : {&options.window, &options.exclude, &options.cuts})
+    for (auto const& n : *group)
+      if (!(std::isfinite(n[0]) && std::isfinite(n[1]) && std::isfinite(n[2])) || (n[0] == 0 && n[1] == 0 && n[2] == 0))
+        throw std::invalid_argument("svm::build: a window, exclusion or cut circle has a zero or non-finite normal");
   std::vector<hvec<FT, 4>> window;
-  for (auto const& n : options.window)
-    if (std::isfinite(n[0]) && std::isfinite(n[1]) && std::isfinite(n[2]) && !(n[0] == 0 && n[1] == 0 && n[2] == 0))
-      window.emplace_back(std::array<FT, 4>{FT(n[0]), FT(n[1]), FT(n[2]), FT(0)});
+  for (auto const& n : options.window) window.emplace_back(std::array<FT, 4>{FT(n[0]), FT(n[1]), FT(n[2]), FT(0)});
   auto outside_window = [&](polygon<FT> const& p) {
     auto toward = [](auto const& q, auto const& o, auto const& w) {
       return (w[0] * q[0] + w[1] * q[1] + w[2] * q[2]) * o[3] - (w[0] * o[0] + w[1] * o[1] + w[2] * o[2]) * q[3];
@@ -663,7 +673,7 @@ template <geometry::number FT> void simplify(visibility_map<FT>& vm) {
       if (vm.locator.is_leaf(n)) vm.locator.leaf_data(n) = new_face[vm.locator.leaf_data(n)];
     });
   } else {
-    detail::rebuild_locator(vm);
+    detail::rebuild_locator(vm, vm.seed);
   }
 }
 
