@@ -50,8 +50,6 @@ public:
   }
 
   tree_type const& as_tree() const noexcept { return tree_; }
-  /// The tree itself, to rewrite leaf payloads (not its shape).
-  tree_type& payloads() noexcept { return tree_; }
   node_id root() const noexcept { return tree_.root(); }
   bool is_covered(node_id leaf) const { return covered_[leaf.index()] != 0; }
 

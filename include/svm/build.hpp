@@ -2,11 +2,14 @@
 /// Construction of the spherical visibility map (the paper's section 3): a
 /// depth-order BSP tree of the scene, traversed front to back from the eye;
 /// each fragment, described on the sphere by the circles through the eye and
-/// its edges' lines, descends an S2 coverage tree (the paper's V, whose
-/// covered siblings collapse: `bsp::coverage_tree`); where it reaches a free
-/// leaf it is visible, and a subtree made of its flagged edges replaces the
-/// leaf while the map T is cut with `split_edge` and `split_face`.  A
-/// point-set tree built from T's edges then locates directions.
+/// its edges' lines, descends an S2 coverage tree (`bsp::coverage_tree`,
+/// covered or free, rebuilt from its covered boundary when it has doubled);
+/// what reaches a free leaf is visible and is kept, and its flagged edges
+/// bound the cell it covers.  The visible pieces, which do not overlap, then
+/// go in random order into a tree whose leaves are the faces of the map T,
+/// cut with `split_edge` and `split_face` as in the paper; a point-set tree
+/// built from T's edges locates directions.  (`keep_construction_tree`, and
+/// builds over double: the paper's one pass, its tree V as the locator.)
 #pragma once
 
 #include "dcel.hpp"
