@@ -42,6 +42,56 @@ TEMPLATE_TEST_CASE("E3 predicates agree with the exact value on random input", "
     }
 }
 
+TEMPLATE_TEST_CASE("E3 convex polygons made directly equal those cut out of their plane edge by edge", "[e3]", double, rational) {
+  using FT = TestType;
+  auto same = [](e3::sub_hyperplane<FT> const& a, e3::sub_hyperplane<FT> const& b) {
+    // Over double the two constructions round differently.
+    if constexpr (!std::is_same_v<FT, double>) REQUIRE(parallel(a.support.n, b.support.n) == sign::positive);
+    CHECK(a.axis == b.axis);
+    auto va = e3::vertices(a), vb = e3::vertices(b);
+    REQUIRE(va);
+    REQUIRE(vb);
+    REQUIRE(va->size() == vb->size());
+    std::size_t n = va->size(), start = 0;
+    auto near = [](e3::point<FT> const& p, e3::point<FT> const& q) {
+      if constexpr (std::is_same_v<FT, double>)
+        return std::abs(p.x() - q.x()) + std::abs(p.y() - q.y()) + std::abs(p.z() - q.z()) < 1e-9;
+      else
+        return p == q;
+    };
+    while (start < n && !near((*vb)[start], (*va)[0])) ++start;
+    REQUIRE(start < n);
+    for (std::size_t i = 0; i < n; ++i) CHECK(near((*vb)[(start + i) % n], (*va)[i]));
+  };
+  auto by_splits = [](std::vector<e3::point<FT>> const& v) {
+    auto support = e3::plane_through(v[0], v[1], v[2]);
+    std::size_t k = dominant_axis(hvec<FT, 3>(std::array<FT, 3>{support.n[0], support.n[1], support.n[2]}));
+    return geometry::detail::convex_polygon_by_splits(v, support, k);
+  };
+  for (bool decimal : {false, true})
+    for (int t = 0; t < 300; ++t) {
+      auto a = random_point<FT>(decimal), b = random_point<FT>(decimal), c = random_point<FT>(decimal);
+      auto const& h = e3::plane_through(a, b, c).n;
+      if (h.sign_at(0) == sign::zero && h.sign_at(1) == sign::zero && h.sign_at(2) == sign::zero) continue; // collinear
+      std::vector<e3::point<FT>> tri{a, b, c};
+      same(e3::convex_polygon(tri), by_splits(tri));
+    }
+  // Degenerate families: collinear consecutive vertices, and a square in each axis plane.
+  std::vector<e3::point<FT>> with_collinear{pt<FT>(4, 4, 6), pt<FT>(0, 4, 4), pt<FT>(0, 0, 0), pt<FT>(2, 0, 1), pt<FT>(4, 0, 2)};
+  same(e3::convex_polygon(with_collinear), by_splits(with_collinear));
+  CHECK(e3::convex_polygon(with_collinear).bounds.size() == 4);
+  for (std::size_t k = 0; k < 3; ++k) {
+    auto at = [k](Q u, Q w) {
+      std::array<Q, 3> c{Q(7), Q(7), Q(7)};
+      c[(k + 1) % 3] = u;
+      c[(k + 2) % 3] = w;
+      return pt<FT>(c[0], c[1], c[2]);
+    };
+    std::vector<e3::point<FT>> square{at(0, 0), at(Q(1, 3), 0), at(Q(1, 3), Q(1, 3)), at(0, Q(1, 3))};
+    same(e3::convex_polygon(square), by_splits(square));
+  }
+}
+
 TEMPLATE_TEST_CASE("E3 polygons: vertices, orientation, split by area", "[e3]", double, rational) {
   using FT = TestType;
   // A quadrilateral on a slanted plane, counter-clockwise seen from its positive side.

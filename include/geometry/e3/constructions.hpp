@@ -61,25 +61,82 @@ hyperplane<FT> edge_plane(point<FT> const& p, point<FT> const& q, std::size_t k,
   return side(b, inside) == oriented_side::negative ? b.opposite() : b;
 }
 
-/// The convex polygon with the given vertices (strictly convex, planar),
-/// oriented so that they turn counter-clockwise seen from its positive side.
-/// Bounding planes are input-derived (degree 2).  Throws `std::invalid_argument`
-/// for fewer than 3 vertices or collinear first three.
-template <number FT> sub_hyperplane<FT> convex_polygon(std::vector<point<FT>> const& v, hyperplane_tag tag = no_tag) {
+} // namespace geometry::e3
+
+namespace geometry::detail {
+
+/// The plane through three homogeneous points (any positive multiples of
+/// theirs), oriented as `plane_through`: the vector of the signed 3 × 3
+/// minors, of degree 3 in the input.  A point at infinity (w = 0) is a
+/// direction the plane contains.
+template <number FT> hvec<FT, 4> plane_of(hvec<FT, 4> const& p, hvec<FT, 4> const& q, hvec<FT, 4> const& r) {
+  return construct<4>(
+      [](auto const& P, auto const& Q, auto const& R) {
+        auto minor = [&](std::size_t i, std::size_t j, std::size_t k) {
+          return P[i] * (Q[j] * R[k] - Q[k] * R[j]) - P[j] * (Q[i] * R[k] - Q[k] * R[i]) + P[k] * (Q[i] * R[j] - Q[j] * R[i]);
+        };
+        return std::array<std::remove_cvref_t<decltype(P[0])>, 4>{minor(1, 2, 3), -minor(0, 2, 3), minor(0, 1, 3), -minor(0, 1, 2)};
+      },
+      p, q, r);
+}
+
+/// The convex polygon by splitting its plane along each edge in turn (any
+/// polygon whose edge planes cut a region, strictly convex or not).
+template <number FT>
+e3::sub_hyperplane<FT> convex_polygon_by_splits(std::vector<e3::point<FT>> const& v, e3::hyperplane<FT> const& support, std::size_t k) {
   std::size_t n = v.size();
-  if (n < 3) throw std::invalid_argument("e3::convex_polygon needs at least 3 vertices");
-  auto support = plane_through(v[0], v[1], v[2], tag);
-  if (support.n[0] == 0 && support.n[1] == 0 && support.n[2] == 0)
-    throw std::invalid_argument("e3::convex_polygon: the first three vertices are collinear");
-  // Project along the largest normal component: the edge planes then contain that axis.
-  std::size_t k = dominant_axis(hvec<FT, 3>(std::array<FT, 3>{support.n[0], support.n[1], support.n[2]}));
-  std::optional<sub_hyperplane<FT>> s = whole_plane(support);
+  std::optional<e3::sub_hyperplane<FT>> s = e3::whole_plane(support);
   for (std::size_t i = 0; i < n && s; ++i) {
     auto const& inside = v[(i + 2) % n];
-    s = split(*s, edge_plane(v[i], v[(i + 1) % n], k, inside)).positive;
+    s = e3::split(*s, e3::edge_plane(v[i], v[(i + 1) % n], k, inside)).positive;
   }
   if (!s) throw std::invalid_argument("e3::convex_polygon: vertices are not convex");
   return *s;
+}
+
+} // namespace geometry::detail
+
+namespace geometry::e3 {
+
+/// The convex polygon with the given vertices (strictly convex, planar),
+/// oriented so that they turn counter-clockwise seen from its positive side.
+/// Bounding planes are input-derived (degree 2 in the vertices' coordinates,
+/// degree 3 in their homogeneous ones).  Throws `std::invalid_argument` for
+/// fewer than 3 vertices or collinear first three.
+///
+/// Each edge plane is made directly (the plane through the edge and the
+/// direction of the axis eliminated by the restriction), and kept when every
+/// other vertex lies strictly on its positive side; a polygon for which that
+/// fails (collinear vertices, say) is cut out of its plane edge by edge.
+template <number FT> sub_hyperplane<FT> convex_polygon(std::vector<point<FT>> const& v, hyperplane_tag tag = no_tag) {
+  std::size_t n = v.size();
+  if (n < 3) throw std::invalid_argument("e3::convex_polygon needs at least 3 vertices");
+  hyperplane<FT> support(detail::plane_of(v[0].homogeneous(), v[1].homogeneous(), v[2].homogeneous()), tag);
+  if (support.n.sign_at(0) == sign::zero && support.n.sign_at(1) == sign::zero && support.n.sign_at(2) == sign::zero)
+    throw std::invalid_argument("e3::convex_polygon: the first three vertices are collinear");
+  // Project along the largest normal component: the edge planes then contain that axis.
+  std::size_t k = 0;
+  for (std::size_t i = 1; i < 3; ++i)
+    if (support.n.abs_greater(i, k)) k = i;
+  std::array<FT, 4> axis{FT(0), FT(0), FT(0), FT(0)};
+  axis[k] = FT(1);
+  hvec<FT, 4> direction(axis);
+  // The polygon's own restriction eliminates the largest of all four
+  // coefficients, as `whole_plane`'s does.
+  sub_hyperplane<FT> s{support, dominant_axis(support.n), {}};
+  s.bounds.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    hyperplane<FT> b(detail::plane_of(v[i].homogeneous(), v[(i + 1) % n].homogeneous(), direction));
+    // Oriented with the rest of the polygon on the positive side, every other vertex strictly.
+    auto first = side(b, v[(i + 2) % n]);
+    if (first == oriented_side::on) return detail::convex_polygon_by_splits(v, support, k);
+    if (first == oriented_side::negative) b = b.opposite();
+    for (std::size_t j = 3; j < n; ++j)
+      if (side(b, v[(i + j) % n]) != oriented_side::positive) return detail::convex_polygon_by_splits(v, support, k);
+    auto line = restrict_to(support.n, s.axis, b.n);
+    s.bounds.push_back({std::move(b), std::move(line)});
+  }
+  return s;
 }
 
 /// The homogeneous vertices of a polygon (w = 0 at infinity); none when it has fewer than two bounds.
