@@ -3,7 +3,7 @@
 /// depth-order BSP tree of the scene, traversed front to back from the eye;
 /// each fragment, described on the sphere by the circles through the eye and
 /// its edges' lines, descends an S2 coverage tree (`bsp::coverage_tree`,
-/// covered or free, rebuilt from its covered boundary when it has doubled);
+/// covered or free, rebuilt from its covered boundary when it has grown fourfold);
 /// what reaches a free leaf is visible and is kept, and its flagged edges
 /// bound the cell it covers.  The visible pieces, which do not overlap, then
 /// go in random order into a tree whose leaves are the faces of the map T,
@@ -90,8 +90,14 @@ struct build_statistics {
   std::size_t locator_nodes = 0;      ///< interior nodes of the tree that locates directions
   double locator_seconds = 0;         ///< building it
   double depth_order_seconds = 0;     ///< building the depth-order tree
+  double visible_seconds = 0;         ///< finding the visible pieces (the coverage pass; the one pass of the paper's build)
+  double map_seconds = 0;             ///< making the map of the visible pieces
+  double simplify_seconds = 0;        ///< simplification, the locator included
   std::size_t rebuilds = 0;           ///< of the coverage tree from its covered boundary
-  std::size_t visible_pieces = 0;     ///< fragment pieces found visible (the map is made of them)
+  std::size_t visible_pieces = 0;     ///< fragment pieces found visible
+  /// What the map is made of: a polygon whose fragments were all wholly
+  /// visible counts once, a fragment wholly visible once, else its visible pieces.
+  std::size_t map_pieces = 0;
   std::size_t overlapping_pieces = 0; ///< visible pieces that met another's cell in the map: always 0
   std::size_t map_tree_nodes = 0;     ///< interior nodes of the tree that cut the map
   map_size unsimplified, simplified;
@@ -392,13 +398,20 @@ visibility_map<FT> build(std::vector<polygon<FT>> const& polygons, geometry::e3:
     }
     return false;
   };
+  // Fragments carry the index of their polygon in `polygons`.
   bsp::fragment_list<K3, std::uint32_t> input;
-  for (auto const& p : polygons) {
+  auto convex = [](polygon<FT> const& p) {
+    auto s = e3::convex_polygon<FT>(p.vertices, p.face);
+    for (auto& b : s.bounds) b.original.tag = detail::edge_tag_bit | p.face;
+    return s;
+  };
+  for (std::uint32_t i = 0; i < polygons.size(); ++i) {
+    auto const& p = polygons[i];
     if (!window.empty() && outside_window(p)) {
       ++st.discarded_outside_window;
       continue;
     }
-    auto s = e3::convex_polygon<FT>(p.vertices, p.face);
+    auto s = convex(p);
     auto side = e3::side(s.support, eye);
     if (side == oriented_side::on) {
       ++st.discarded_edge_on;
@@ -408,8 +421,7 @@ visibility_map<FT> build(std::vector<polygon<FT>> const& polygons, geometry::e3:
       ++st.discarded_backfacing;
       continue;
     }
-    for (auto& b : s.bounds) b.original.tag = detail::edge_tag_bit | p.face;
-    input.push_back({std::move(s), p.face});
+    input.push_back({std::move(s), i});
   }
 
   // 2. The depth-order tree.
@@ -463,12 +475,14 @@ visibility_map<FT> build(std::vector<polygon<FT>> const& polygons, geometry::e3:
     detail::node_circles<FT> nc;
     nc.refresh(v.as_tree());
     detail::circle_store<FT> fragment_circles;
+    auto t_visible = std::chrono::steady_clock::now();
     bsp::for_each_front_to_back(tree, eye, [&](auto const& fr) {
       ++st.fragments;
       report();
       fragment_circles.clear();
-      st.hidden_pieces += into_map(v, nc, detail::project(fr.piece, eye, fragment_circles), fr.id);
+      st.hidden_pieces += into_map(v, nc, detail::project(fr.piece, eye, fragment_circles), polygons[fr.id].face);
     });
+    st.visible_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_visible).count();
     st.v_nodes = st.v_nodes_peak = st.map_tree_nodes = v.interior_nodes();
     vm.locator = std::move(v).release();
     vm.locator_is_construction_tree = true;
@@ -476,9 +490,9 @@ visibility_map<FT> build(std::vector<polygon<FT>> const& polygons, geometry::e3:
   } else {
     // Pass 1: what is visible.  The coverage tree knows only covered and
     // free; each visible piece is kept, its flagged edges bound the cell it
-    // covers, and when the tree has doubled it is rebuilt from the boundary
-    // of the covered region, so that what was cut through the free space and
-    // through the covered region goes.
+    // covers, and when the tree has grown fourfold it is rebuilt from the
+    // boundary of the covered region, so that what was cut through the free
+    // space and through the covered region goes.
     detail::coverage<FT> cover(index{0}, true);
     {
       dcel<FT> scratch;
@@ -489,14 +503,21 @@ visibility_map<FT> build(std::vector<polygon<FT>> const& polygons, geometry::e3:
     detail::circle_store<FT> circles; // every fragment's, for both passes
     struct visible_piece {
       fragment bounds;
-      std::int64_t label;
+      std::uint32_t polygon;
     };
     std::vector<visible_piece> visible;
-    std::size_t const least_rebuild = 256;
-    std::size_t limit = std::max(least_rebuild, 2 * cover.interior_nodes());
+    // Per polygon: its fragments, and how many of them were wholly visible.
+    std::vector<std::uint32_t> fragments_of(polygons.size(), 0), whole_of(polygons.size(), 0);
+    // Rebuilt when it has grown fourfold (and past 256 nodes): a rebuild
+    // costs a few times what an insertion pays per node, and on scenes whose
+    // covered boundary stays complex it shrinks the tree little.
+    std::size_t const least_rebuild = 256, growth = 4;
+    std::size_t limit = std::max(least_rebuild, growth * cover.interior_nodes());
+    auto t_visible = std::chrono::steady_clock::now();
     bsp::for_each_front_to_back(tree, eye, [&](auto const& fr) {
       ++st.fragments;
       report();
+      std::size_t first = visible.size();
       auto visit = [&](fragment&& piece, bsp::node_id leaf, place at) {
         std::size_t k = piece.size();
         for (std::size_t i = 0; i < k; ++i) {
@@ -512,19 +533,39 @@ visibility_map<FT> build(std::vector<polygon<FT>> const& polygons, geometry::e3:
         cover.cover(at, leaf);
         visible.push_back({std::move(piece), fr.id});
       };
-      st.hidden_pieces += cover.insert(detail::project(fr.piece, eye, circles), [&](fragment& p, bsp::node_id n) { return detail::route(p, nc.of[n.index()], signs); }, visit);
+      fragment projected = detail::project(fr.piece, eye, circles);
+      std::size_t hidden = cover.insert(projected, [&](fragment& p, bsp::node_id n) { return detail::route(p, nc.of[n.index()], signs); }, visit);
+      st.hidden_pieces += hidden;
+      st.visible_pieces += visible.size() - first;
+      ++fragments_of[fr.id];
+      // Wholly visible: its pieces partition it, so the map takes it whole.
+      if (hidden == 0 && visible.size() > first) {
+        ++whole_of[fr.id];
+        visible.resize(first);
+        visible.push_back({std::move(projected), fr.id});
+      }
       if (cover.interior_nodes() > limit) {
         cover.rebuild(bsp::random_order(options.seed + st.rebuilds));
         nc.refresh(cover.as_tree());
         ++st.rebuilds;
-        limit = std::max(least_rebuild, 2 * cover.interior_nodes());
+        limit = std::max(least_rebuild, growth * cover.interior_nodes());
       }
     });
     st.v_nodes = cover.interior_nodes();
     st.v_nodes_peak = cover.peak_interior_nodes();
-    st.visible_pieces = visible.size();
+    // A polygon all of whose fragments were wholly visible is visible whole:
+    // the map takes its own projection, without the depth order's cuts.
+    {
+      std::erase_if(visible, [&](visible_piece const& p) { return fragments_of[p.polygon] >= 2 && whole_of[p.polygon] == fragments_of[p.polygon]; });
+      for (std::uint32_t i = 0; i < polygons.size(); ++i)
+        if (fragments_of[i] >= 2 && whole_of[i] == fragments_of[i])
+          visible.push_back({detail::project(convex(polygons[i]), eye, circles), i});
+    }
+    st.map_pieces = visible.size();
+    st.visible_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_visible).count();
     // Pass 2: the map from the visible pieces, which do not overlap, in
     // random order (the tree's cuts then stay few), every edge flagged again.
+    auto t_map = std::chrono::steady_clock::now();
     std::mt19937_64 rng(options.seed);
     std::shuffle(visible.begin(), visible.end(), rng);
     detail::coverage<FT> v(index{0}, true);
@@ -533,17 +574,20 @@ visibility_map<FT> build(std::vector<polygon<FT>> const& polygons, geometry::e3:
     mc.refresh(v.as_tree());
     for (auto& p : visible) {
       for (auto& b : p.bounds) b.flag = true;
-      st.overlapping_pieces += into_map(v, mc, std::move(p.bounds), p.label);
+      st.overlapping_pieces += into_map(v, mc, std::move(p.bounds), polygons[p.polygon].face);
     }
+    st.map_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_map).count();
     st.map_tree_nodes = v.peak_interior_nodes();
   }
   st.unsimplified = {m.vertices().size(), m.half_edges().size() / 2, m.faces().size()};
   st.simplified = st.unsimplified;
   if (options.progress) options.progress(1.0);
+  auto t_simplify = std::chrono::steady_clock::now();
   if (options.simplify)
     simplify(vm);
   else if (!keep_tree)
     detail::rebuild_locator(vm, options.seed);
+  st.simplify_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_simplify).count();
   st.filter_fallbacks = filter_stats().fallbacks - fallbacks0;
   st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return vm;
