@@ -120,10 +120,10 @@ template <class Cutter> struct balanced {
 /// Of `samples` random candidates, scored on a random subset of `probe`
 /// pieces, it takes the one with the least `split_weight` × splits +
 /// imbalance among those leaving at least one piece in `min_share` on each
-/// side.  When no candidate is that balanced (a convex surface, whose
-/// autopartition is a chain n deep), it asks `cutter` for a free hyperplane
-/// for the sampled pieces and takes it if that is balanced; failing that, the
-/// candidate with the fewest splits.  At or below `threshold` pieces, of
+/// side.  It also asks `cutter` for a free hyperplane for the sampled pieces
+/// and takes it when that is as balanced and costs less (a grid line through
+/// a terrain, or a convex surface, whose autopartition is a chain n deep);
+/// failing both, the candidate with the fewest splits.  At or below `threshold` pieces, of
 /// `small_samples` candidates scored on every piece, the one with the fewest
 /// splits (ties: the more even), and no free cut.  A depth-order tree built
 /// with it has few fragments per input polygon on scenes of boxes and slabs,
@@ -184,14 +184,17 @@ template <class Cutter> struct few_splits {
       if (!fewest_score || s.splits < fewest_score->splits) fewest = c, fewest_score = s;
       if (balanced(s) && (!best_score || cost(s) < cost(*best_score))) best = c, best_score = s;
     }
-    if (best_score) return {best, std::nullopt};
     // The cutter sees the sampled pieces only: a median of a sample is near
-    // enough, and the cut is checked for balance on the sample anyway.
+    // enough, and the cut is scored on the sample anyway.  It is taken when
+    // it is balanced and costs less than the best balanced input plane.
     std::vector<Item> subset;
     subset.reserve(m);
     for (std::size_t i : sample) subset.push_back(items[i]);
-    if (auto cut = cutter(subset))
-      if (balanced(count(*cut))) return {fewest, std::move(cut)};
+    if (auto cut = cutter(subset)) {
+      score s = count(*cut);
+      if (balanced(s) && (!best_score || cost(s) < cost(*best_score))) return {best_score ? best : fewest, std::move(cut)};
+    }
+    if (best_score) return {best, std::nullopt};
     return {fewest, std::nullopt};
   }
 

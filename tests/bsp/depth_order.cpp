@@ -144,6 +144,20 @@ TEST_CASE("E3 depth order on a convex surface: balanced cuts keep the tree shall
     }
   bsp::fragment_list<K3> input;
   for (std::size_t i = 0; i < tris.size(); ++i) input.push_back({e3::convex_polygon<Q>(tris[i]), i});
+  // The free cut goes through a median vertex coordinate: along a grid line,
+  // where it crosses no triangle, with an eighth of them on either side.
+  auto cut = e3::axis_median_cut<Q>{}(input);
+  REQUIRE(cut);
+  std::size_t crossed = 0, below = 0, above = 0;
+  for (auto const& f : input) {
+    auto r = e3::split(f.piece, *cut);
+    crossed += r.negative && r.positive;
+    below += r.negative && !r.positive;
+    above += r.positive && !r.negative;
+  }
+  CHECK(crossed == 0);
+  CHECK(below * 8 >= input.size());
+  CHECK(above * 8 >= input.size());
   auto chain = bsp::build_depth_order<K3>(input, bsp::random_order(3));
   auto shallow = bsp::build_depth_order<K3>(input, bsp::balanced(e3::axis_median_cut<Q>{}, 3, 16));
   auto dc = chain.statistics().depth, ds = shallow.statistics().depth;

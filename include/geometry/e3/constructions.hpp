@@ -9,7 +9,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <optional>
+#include <tuple>
 #include <stdexcept>
 #include <vector>
 
@@ -293,11 +295,77 @@ template <number FT> std::optional<FT> volume(polytope<FT> const& c) {
 
 /// @}
 
-/// The free cut of `bsp::balanced` for polygons in space: the plane
-/// perpendicular to the axis along which the pieces' vertices spread most,
-/// through the median of their centres rounded to 24 bits of that spread (a
-/// constant of bounded size, so predicates keep their degree bound).  Nothing
-/// when fewer than one piece in eight would lie wholly on either side.
+} // namespace geometry::e3
+
+namespace geometry::detail {
+
+/// `v` in doubles, scaled by a positive factor so that its largest
+/// coordinate is 1 in magnitude; nothing when it is zero or too large for the
+/// filter's approximation.
+template <number FT, std::size_t N> std::optional<std::array<double, N>> unit_doubles(hvec<FT, N> const& v) {
+  std::array<double, N> d;
+  if constexpr (exact_field<FT>) {
+    d = v.approx().v;
+  } else {
+    for (std::size_t i = 0; i < N; ++i) d[i] = v[i];
+  }
+  double m = 0;
+  for (double x : d) m = std::max(m, std::fabs(x));
+  if (!(m > 0) || !std::isfinite(m)) return std::nullopt;
+  for (double& x : d) x /= m;
+  return d;
+}
+
+/// The vertices of the bounded polygon `s` in doubles, computed from the
+/// doubles of its planes as `homogeneous_vertices` computes them exactly (no
+/// exact construction: for estimates, such as where to cut); false when a
+/// vertex is at infinity or the doubles fail.
+template <number FT> bool approximate_vertices(e3::sub_hyperplane<FT> const& s, std::vector<std::array<double, 3>>& out) {
+  out.clear();
+  std::size_t n = s.bounds.size(), k = s.axis;
+  if (n < 3) return false;
+  auto P = unit_doubles(s.support.n);
+  if (!P) return false;
+  bool flip = restriction_flips(s.support.n, k), neg = s.support.n.sign_at(k) == sign::negative;
+  std::vector<std::array<double, 3>> lines(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    auto l = unit_doubles(s.bounds[i].line());
+    if (!l) return false;
+    lines[i] = *l;
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    auto const &a = lines[i], &b = lines[(i + 1) % n];
+    std::array<double, 3> X{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+    std::array<double, 4> r{};
+    double sum = 0;
+    for (std::size_t c = 0, j = 0; c < 4; ++c) {
+      if (c == k) continue;
+      double xj = (flip && j == 0) ? -X[j] : X[j];
+      r[c] = neg ? -((*P)[k] * xj) : (*P)[k] * xj;
+      sum += (*P)[c] * xj;
+      ++j;
+    }
+    r[k] = neg ? sum : -sum;
+    if (!(r[3] > 0)) return false;
+    std::array<double, 3> v{r[0] / r[3], r[1] / r[3], r[2] / r[3]};
+    if (!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2])) return false;
+    out.push_back(v);
+  }
+  return true;
+}
+
+} // namespace geometry::detail
+
+namespace geometry::e3 {
+
+/// The free cut of `bsp::balanced` for polygons in space: of the three
+/// planes perpendicular to an axis through the median of the pieces' vertex
+/// coordinates along it (rounded to 24 bits of the spread: a constant of
+/// bounded size, so predicates keep their degree bound), the one that
+/// crosses the fewest pieces' boxes, among those leaving at least one piece
+/// in eight wholly on either side; nothing when none does.  Through a
+/// vertex coordinate, such a cut often crosses no piece at all: between the
+/// rings of a sphere, along the lines of a grid.
 template <number FT> struct axis_median_cut {
   /// `items`: a vector of sub-hyperplanes, or of objects with a member `piece` (a sub-hyperplane).
   template <class Items> std::optional<hyperplane<FT>> operator()(Items const& items) const {
@@ -309,39 +377,52 @@ template <number FT> struct axis_median_cut {
     };
     std::size_t n = items.size();
     std::vector<std::array<double, 6>> box(n); // lo x y z, hi x y z
+    // Each vertex coordinate with its piece and vertex: (value, piece, index).
+    std::array<std::vector<std::tuple<double, std::uint32_t, std::uint32_t>>, 3> coordinates;
     std::array<double, 3> lo{HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+    std::vector<std::array<double, 3>> vertices;
     for (std::size_t i = 0; i < n; ++i) {
       auto& b = box[i];
       b = {HUGE_VAL, HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
-      for (auto const& x : homogeneous_vertices(piece(items[i]))) {
-        double w = to_double(x[3]);
-        if (!(w > 0)) return std::nullopt; // unbounded pieces: leave it to autopartition
+      // Unbounded pieces (or doubles out of range): leave it to autopartition.
+      if (!detail::approximate_vertices(piece(items[i]), vertices)) return std::nullopt;
+      for (std::uint32_t v = 0; v < vertices.size(); ++v) {
+        auto const& x = vertices[v];
         for (std::size_t k = 0; k < 3; ++k) {
-          double c = to_double(x[k]) / w;
+          double c = x[k];
+          coordinates[k].emplace_back(c, static_cast<std::uint32_t>(i), v);
           b[k] = std::min(b[k], c), b[k + 3] = std::max(b[k + 3], c);
         }
       }
       for (std::size_t k = 0; k < 3; ++k) lo[k] = std::min(lo[k], b[k]), hi[k] = std::max(hi[k], b[k + 3]);
     }
-    std::array<std::size_t, 3> axes{0, 1, 2};
-    std::sort(axes.begin(), axes.end(), [&](auto a, auto b) { return hi[a] - lo[a] > hi[b] - lo[b]; });
-    std::vector<double> centre(n);
-    for (std::size_t k : axes) {
+    std::optional<std::pair<std::size_t, double>> best; // axis, position
+    std::size_t best_crossed = n + 1;
+    for (std::size_t k = 0; k < 3; ++k) {
       double spread = hi[k] - lo[k];
-      if (!(spread > 0)) break;
-      for (std::size_t i = 0; i < n; ++i) centre[i] = 0.5 * (box[i][k] + box[i][k + 3]);
-      std::nth_element(centre.begin(), centre.begin() + n / 2, centre.end());
+      if (!(spread > 0)) continue;
+      auto& c = coordinates[k];
+      std::nth_element(c.begin(), c.begin() + static_cast<std::ptrdiff_t>(c.size() / 2), c.end());
+      // The median vertex's coordinate, from its exact construction (the
+      // doubles of a vertex between nearly parallel edges are poor).
+      auto [approximate, i, v] = c[c.size() / 2];
+      auto x = homogeneous_vertices(piece(items[i]))[v];
+      double median = to_double(x[k]) / to_double(x[3]);
+      if (!std::isfinite(median)) median = approximate;
       int e = std::ilogb(spread);
-      double c = std::ldexp(std::round(std::ldexp(centre[n / 2], 24 - e)), e - 24);
-      double margin = spread * 1e-9;
+      double at = std::ldexp(std::round(std::ldexp(median, 24 - e)), e - 24);
+      // Boxes from doubles: a vertex on the cut may come out a little off it.
+      double tolerance = spread * 1e-9;
       std::size_t below = 0, above = 0;
-      for (auto const& b : box) below += b[k + 3] < c - margin, above += b[k] > c + margin;
+      for (auto const& b : box) below += b[k + 3] <= at + tolerance, above += b[k] >= at - tolerance;
       if (below * 8 < n || above * 8 < n) continue;
-      std::array<FT, 4> h{FT(0), FT(0), FT(0), FT(-1) * FT(c)};
-      h[k] = FT(1);
-      return hyperplane<FT>(hvec<FT, 4>(h));
+      std::size_t crossed = n - below - above;
+      if (crossed < best_crossed) best = std::pair{k, at}, best_crossed = crossed;
     }
-    return std::nullopt;
+    if (!best) return std::nullopt;
+    std::array<FT, 4> h{FT(0), FT(0), FT(0), FT(-1) * FT(best->second)};
+    h[best->first] = FT(1);
+    return hyperplane<FT>(hvec<FT, 4>(h));
   }
 };
 
