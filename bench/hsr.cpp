@@ -56,10 +56,15 @@ struct view {
 using poly = std::vector<vec3>;
 
 /// A software z-buffer: every polygon clipped to the near plane, fanned into
-/// triangles, rasterised with edge functions at pixel centres; the depth
-/// kept is 1/z, which is linear in the image.  Returns the covered pixels.
-std::size_t zbuffer(std::vector<poly> const& scene, view const& v, std::vector<float>& depth, std::vector<std::uint32_t>& id) {
+/// triangles, rasterised a span a row (where the edge functions at pixel
+/// centres are all at least 0), 1/z stepped along the span (it is linear in
+/// the image).  Returns the covered pixels; `tested` counts the depth tests
+/// (pixels of every triangle in view: their mean over the image is the
+/// scene's depth complexity).
+std::size_t zbuffer(std::vector<poly> const& scene, view const& v, std::vector<float>& depth, std::vector<std::uint32_t>& id,
+                    std::size_t& tested) {
   int n = v.size;
+  tested = 0;
   std::fill(depth.begin(), depth.end(), 0.0f);
   std::fill(id.begin(), id.end(), 0u);
   std::vector<vec3> cam, clipped;
@@ -95,18 +100,42 @@ std::size_t zbuffer(std::vector<poly> const& scene, view const& v, std::vector<f
       int x1 = std::min(n - 1, static_cast<int>(std::ceil(std::max({a[0], b[0], c[0]}))));
       int y0 = std::max(0, static_cast<int>(std::floor(std::min({a[1], b[1], c[1]}))));
       int y1 = std::min(n - 1, static_cast<int>(std::ceil(std::max({a[1], b[1], c[1]}))));
+      // The barycentric weights and 1/z are linear in the pixel centre
+      // (px, py): c[0]·px + c[1]·py + c[2].  Each row is one span: where the
+      // three weights are at least 0.
       double inv = 1 / area;
-      for (int y = y0; y <= y1; ++y)
-        for (int x = x0; x <= x1; ++x) {
-          double px = x + 0.5, py = y + 0.5;
-          double w0 = ((b[0] - px) * (c[1] - py) - (b[1] - py) * (c[0] - px)) * inv;
-          double w1 = ((c[0] - px) * (a[1] - py) - (c[1] - py) * (a[0] - px)) * inv;
-          double w2 = 1 - w0 - w1;
-          if (w0 < 0 || w1 < 0 || w2 < 0) continue;
-          float z = static_cast<float>(w0 * a[2] + w1 * b[2] + w2 * c[2]);
-          std::size_t at = static_cast<std::size_t>(y) * static_cast<std::size_t>(n) + static_cast<std::size_t>(x);
-          if (z > depth[at]) depth[at] = z, id[at] = static_cast<std::uint32_t>(f + 1);
+      using linear = std::array<double, 3>;
+      auto weight = [inv](auto const& p, auto const& q) { // of the vertex opposite the edge p → q
+        return linear{(p[1] - q[1]) * inv, (q[0] - p[0]) * inv, (p[0] * q[1] - p[1] * q[0]) * inv};
+      };
+      linear w0 = weight(b, c), w1 = weight(c, a);
+      linear w2{-w0[0] - w1[0], -w0[1] - w1[1], 1 - w0[2] - w1[2]};
+      linear z;
+      for (int i = 0; i < 3; ++i) z[i] = w0[i] * a[2] + w1[i] * b[2] + w2[i] * c[2];
+      for (int y = y0; y <= y1; ++y) {
+        double py = y + 0.5, lo = x0 + 0.5, hi = x1 + 0.5;
+        bool empty = false;
+        for (auto const* w : {&w0, &w1, &w2}) {
+          double slope = (*w)[0], at = (*w)[1] * py + (*w)[2];
+          if (slope > 0)
+            lo = std::max(lo, -at / slope);
+          else if (slope < 0)
+            hi = std::min(hi, -at / slope);
+          else if (at < 0)
+            empty = true;
         }
+        if (empty || lo > hi) continue;
+        int xs = std::max(x0, static_cast<int>(std::ceil(lo - 0.5))), xe = std::min(x1, static_cast<int>(std::floor(hi - 0.5)));
+        if (xs > xe) continue;
+        tested += static_cast<std::size_t>(xe - xs + 1);
+        double zx = z[0] * (xs + 0.5) + z[1] * py + z[2];
+        std::size_t row = static_cast<std::size_t>(y) * static_cast<std::size_t>(n);
+        for (int x = xs; x <= xe; ++x, zx += z[0]) {
+          float zf = static_cast<float>(zx);
+          std::size_t at = row + static_cast<std::size_t>(x);
+          if (zf > depth[at]) depth[at] = zf, id[at] = static_cast<std::uint32_t>(f + 1);
+        }
+      }
     }
   }
   return static_cast<std::size_t>(std::count_if(id.begin(), id.end(), [](std::uint32_t x) { return x != 0; }));
@@ -230,16 +259,28 @@ int main(int argc, char** argv) {
       cam.width = cam.height = size;
       auto in_view = svm::projector(cam, svm::projection::perspective).window_options();
       std::size_t faces = 0, all_faces = 0;
-      double t = median_seconds(runs, [&] { faces = svm::build<geometry::rational>(polys, eye_q, in_view).stats.simplified.faces; });
+      svm::build_statistics view_stats;
+      double t = median_seconds(runs, [&] {
+        view_stats = svm::build<geometry::rational>(polys, eye_q, in_view).stats;
+        faces = view_stats.simplified.faces;
+      });
       double t_all = median_seconds(runs, [&] { all_faces = svm::build<geometry::rational>(polys, eye_q).stats.simplified.faces; });
       std::printf(", \"map_seconds\": %.6g, \"map_faces\": %zu, \"sphere_map_seconds\": %.6g, \"sphere_map_faces\": %zu", t, faces,
                   t_all, all_faces);
+      // Where the view's build goes (its last run).
+      auto const& w = view_stats;
+      std::printf(", \"view\": {\"outside_window\": %zu, \"fragments\": %zu, \"hidden_pieces\": %zu, \"map_pieces\": %zu, "
+                  "\"depth_order_seconds\": %.6g, \"visible_seconds\": %.6g, \"map_seconds\": %.6g, \"simplify_seconds\": %.6g, "
+                  "\"seconds\": %.6g}",
+                  w.discarded_outside_window, w.fragments, w.hidden_pieces, w.map_pieces, w.depth_order_seconds, w.visible_seconds,
+                  w.map_seconds, w.simplify_seconds, w.seconds);
     }
     std::vector<float> depth(static_cast<std::size_t>(size) * static_cast<std::size_t>(size));
     std::vector<std::uint32_t> id(depth.size());
     std::size_t covered = 0;
-    double tz = median_seconds(runs, [&] { covered = zbuffer(scene, v, depth, id); });
-    std::printf(", \"zbuffer_seconds\": %.6g, \"zbuffer_pixels\": %zu", tz, covered);
+    std::size_t tested = 0;
+    double tz = median_seconds(runs, [&] { covered = zbuffer(scene, v, depth, id, tested); });
+    std::printf(", \"zbuffer_seconds\": %.6g, \"zbuffer_pixels\": %zu, \"zbuffer_depth_tests\": %zu", tz, covered, tested);
 #ifdef GENBSP_BENCH_GL2PS
     // The off-screen context, made once, outside the timing.
     std::vector<unsigned char> pixels(static_cast<std::size_t>(size) * static_cast<std::size_t>(size) * 4, 0);
