@@ -217,9 +217,11 @@ template <geometry::number FT> struct node_circles {
     auto const* pos = &store.emplace_back(c);
     of[node.index()] = {pos, &store.emplace_back(c.opposite())};
   }
-  /// Every interior node of `t` (after a new tree replaced the old one).
+  /// Every interior node of `t` (after a new tree replaced the old one); the
+  /// old nodes' circles go, so nothing may still point to them.
   template <class Tree> void refresh(Tree const& t) {
     of.clear();
+    store.clear();
     for (std::uint32_t i = 0; i < t.interior_count(); ++i) keep(bsp::node_id::interior(i), t.splitter(bsp::node_id::interior(i)));
   }
 };
@@ -500,7 +502,10 @@ visibility_map<FT> build(std::vector<polygon<FT>> const& polygons, geometry::e3:
     }
     detail::node_circles<FT> nc;
     nc.refresh(cover.as_tree());
-    detail::circle_store<FT> circles; // every fragment's, for both passes
+    // The circles of visible pieces, for both passes; a fragment's circles
+    // are made in `scratch` and moved here only when some piece of it is
+    // visible, so that hidden fragments leave nothing behind.
+    detail::circle_store<FT> circles, scratch;
     struct visible_piece {
       fragment bounds;
       std::uint32_t polygon;
@@ -510,8 +515,11 @@ visibility_map<FT> build(std::vector<polygon<FT>> const& polygons, geometry::e3:
     std::vector<std::uint32_t> fragments_of(polygons.size(), 0), whole_of(polygons.size(), 0);
     // Rebuilt when it has grown fourfold (and past 256 nodes): a rebuild
     // costs a few times what an insertion pays per node, and on scenes whose
-    // covered boundary stays complex it shrinks the tree little.
-    std::size_t const least_rebuild = 256, growth = 4;
+    // covered boundary stays complex it shrinks the tree little.  After a
+    // rebuild that more than halved it (free space cut up by earlier pieces,
+    // as on Platforms), it is rebuilt when it has doubled.
+    std::size_t const least_rebuild = 256;
+    std::size_t growth = 4;
     std::size_t limit = std::max(least_rebuild, growth * cover.interior_nodes());
     auto t_visible = std::chrono::steady_clock::now();
     bsp::for_each_front_to_back(tree, eye, [&](auto const& fr) {
@@ -533,7 +541,8 @@ visibility_map<FT> build(std::vector<polygon<FT>> const& polygons, geometry::e3:
         cover.cover(at, leaf);
         visible.push_back({std::move(piece), fr.id});
       };
-      fragment projected = detail::project(fr.piece, eye, circles);
+      scratch.clear();
+      fragment projected = detail::project(fr.piece, eye, scratch);
       std::size_t hidden = cover.insert(projected, [&](fragment& p, bsp::node_id n) { return detail::route(p, nc.of[n.index()], signs); }, visit);
       st.hidden_pieces += hidden;
       st.visible_pieces += visible.size() - first;
@@ -544,15 +553,33 @@ visibility_map<FT> build(std::vector<polygon<FT>> const& polygons, geometry::e3:
         visible.resize(first);
         visible.push_back({std::move(projected), fr.id});
       }
+      // The visible pieces' circles (the fragment's own and the nodes' that
+      // split it) are copied to the store: the scratch is cleared for the
+      // next fragment, and the nodes' circles go with a rebuild.
+      if (visible.size() > first) {
+        std::vector<std::pair<geometry::s2::hyperplane<FT> const*, geometry::s2::hyperplane<FT> const*>> moved;
+        for (std::size_t i = first; i < visible.size(); ++i)
+          for (auto& b : visible[i].bounds) {
+            auto it = std::find_if(moved.begin(), moved.end(), [&](auto const& m) { return m.first == b.c; });
+            if (it == moved.end()) it = moved.insert(moved.end(), {b.c, &circles.emplace_back(*b.c)});
+            b.c = it->second;
+          }
+      }
       if (cover.interior_nodes() > limit) {
+        std::size_t before = cover.interior_nodes();
         cover.rebuild(bsp::random_order(options.seed + st.rebuilds));
         nc.refresh(cover.as_tree());
         ++st.rebuilds;
+        growth = 2 * cover.interior_nodes() < before ? 2 : 4;
         limit = std::max(least_rebuild, growth * cover.interior_nodes());
       }
     });
     st.v_nodes = cover.interior_nodes();
     st.v_nodes_peak = cover.peak_interior_nodes();
+    // Neither the depth order nor the coverage tree is needed any more.
+    tree = decltype(tree){};
+    cover = detail::coverage<FT>(index{0}, true);
+    nc = detail::node_circles<FT>{};
     // A polygon all of whose fragments were wholly visible is visible whole:
     // the map takes its own projection, without the depth order's cuts.
     {
