@@ -265,6 +265,12 @@ template <geometry G, class N, label L> std::vector<boundary_piece<G, L>> bounda
     auto const& h = t.splitter(n);
     std::optional<S> section = G::whole(h);
     for (auto const& g : path) {
+      // Wholly on one side: kept or gone without a split (no construction).
+      if (int w = detail::whole_side<G>(*section, g)) {
+        if (w < 0) section.reset();
+        if (!section) break;
+        continue;
+      }
       auto r = G::split(*section, g);
       section = r.positive;
       if (!section) break;

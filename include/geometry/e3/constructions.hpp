@@ -120,9 +120,11 @@ template <number FT> sub_hyperplane<FT> convex_polygon(std::vector<point<FT>> co
   std::size_t k = 0;
   for (std::size_t i = 1; i < 3; ++i)
     if (support.n.abs_greater(i, k)) k = i;
-  std::array<FT, 4> axis{FT(0), FT(0), FT(0), FT(0)};
-  axis[k] = FT(1);
-  hvec<FT, 4> direction(axis);
+  // The directions of the axes, made once (a copy shares their numbers).
+  static hvec<FT, 4> const axes[3] = {hvec<FT, 4>(std::array<FT, 4>{FT(1), FT(0), FT(0), FT(0)}),
+                                      hvec<FT, 4>(std::array<FT, 4>{FT(0), FT(1), FT(0), FT(0)}),
+                                      hvec<FT, 4>(std::array<FT, 4>{FT(0), FT(0), FT(1), FT(0)})};
+  hvec<FT, 4> const& direction = axes[k];
   // The polygon's own restriction eliminates the largest of all four
   // coefficients, as `whole_plane`'s does.
   sub_hyperplane<FT> s{support, dominant_axis(support.n), {}};
