@@ -147,26 +147,31 @@ template <number FT, std::size_t N> hvec<FT, N - 1> drop(hvec<FT, N> const& p, s
       x);
 }
 
+namespace detail {
+/// The values of `lift` on coordinates of any arithmetic type (integers,
+/// bit counters, doubles for estimates): `P` the hyperplane's N coordinates,
+/// `X` the N − 1 restricted ones, `flip` and `neg` as `restrict_to` sets them.
+template <std::size_t N, class PA, class XA> auto lift_values(PA const& P, std::size_t k, bool flip, bool neg, XA const& X) {
+  using T = std::remove_cvref_t<decltype(P[0])>;
+  std::array<T, N> r;
+  T s{};
+  for (std::size_t i = 0, j = 0; i < N; ++i) {
+    if (i == k) continue;
+    T xj = (flip && j == 0) ? T(-X[j]) : T(X[j]);
+    r[i] = neg ? T(-(P[k] * xj)) : T(P[k] * xj);
+    s = s + P[i] * xj;
+    ++j;
+  }
+  r[k] = neg ? s : T(-s);
+  return r;
+}
+} // namespace detail
+
 /// The point of the hyperplane `p` whose restricted coordinates are `x`: the
 /// inverse of `drop`, up to a positive factor.
 template <number FT, std::size_t N> hvec<FT, N> lift(hvec<FT, N> const& p, std::size_t k, hvec<FT, N - 1> const& x) {
   bool flip = detail::restriction_flips(p, k), neg = p.sign_at(k) == sign::negative;
-  return construct<N>(
-      [k, flip, neg](auto const& P, auto const& X) {
-        using T = std::remove_cvref_t<decltype(P[0])>;
-        std::array<T, N> r;
-        T s{};
-        for (std::size_t i = 0, j = 0; i < N; ++i) {
-          if (i == k) continue;
-          T xj = (flip && j == 0) ? T(-X[j]) : T(X[j]);
-          r[i] = neg ? T(-(P[k] * xj)) : T(P[k] * xj);
-          s = s + P[i] * xj;
-          ++j;
-        }
-        r[k] = neg ? s : T(-s);
-        return r;
-      },
-      p, x);
+  return construct<N>([k, flip, neg](auto const& P, auto const& X) { return detail::lift_values<N>(P, k, flip, neg, X); }, p, x);
 }
 
 /// The same, for restricted coordinates given as numbers.

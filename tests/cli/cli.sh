@@ -60,7 +60,8 @@ check "locate from standard input, culling back faces" cmp -s "$work/located" "$
 
 # stats: one JSON object with the required keys.
 "$genbsp" stats "$work/scene.off" --eye 0,0,0 >"$work/stats.json"
-for key in input_faces discarded_faces fragments v_nodes map map_unsimplified filter_fallbacks seconds peak_bytes; do
+for key in input_faces discarded_faces fragments v_nodes map map_unsimplified filter_fallbacks seconds peak_bytes \
+  depth_order_seconds visible_seconds map_seconds simplify_seconds visible_pieces map_pieces; do
   check "stats has $key" grep -q "\"$key\"" "$work/stats.json"
 done
 check "stats counts 7 input faces" grep -q '"input_faces":7' "$work/stats.json"

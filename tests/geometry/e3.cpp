@@ -74,7 +74,24 @@ TEMPLATE_TEST_CASE("E3 convex polygons made directly equal those cut out of thei
       auto const& h = e3::plane_through(a, b, c).n;
       if (h.sign_at(0) == sign::zero && h.sign_at(1) == sign::zero && h.sign_at(2) == sign::zero) continue; // collinear
       std::vector<e3::point<FT>> tri{a, b, c};
-      same(e3::convex_polygon(tri), by_splits(tri));
+      auto made = e3::convex_polygon(tri);
+      same(made, by_splits(tri));
+      if constexpr (!std::is_same_v<FT, double>) {
+        // Against the input: its vertices are the triangle's, and its
+        // positive side is where (b − a) × (c − a) points, in exact arithmetic.
+        auto e = [](e3::point<FT> const& p) { return std::array<Q, 3>{test::exact(p.x()), test::exact(p.y()), test::exact(p.z())}; };
+        auto A = e(a), B = e(b), C = e(c);
+        auto n = test::ref_cross({B[0] - A[0], B[1] - A[1], B[2] - A[2]}, {C[0] - A[0], C[1] - A[1], C[2] - A[2]});
+        CHECK(e3::side(made.support, pt<FT>(A[0] + n[0], A[1] + n[1], A[2] + n[2])) == oriented_side::positive);
+        auto vs = e3::vertices(made);
+        REQUIRE(vs);
+        REQUIRE(vs->size() == 3);
+        std::size_t start = 0;
+        while (start < 3 && !((*vs)[start] == a)) ++start;
+        REQUIRE(start < 3);
+        CHECK((*vs)[(start + 1) % 3] == b);
+        CHECK((*vs)[(start + 2) % 3] == c);
+      }
     }
   // Degenerate families: collinear consecutive vertices, and a square in each axis plane.
   std::vector<e3::point<FT>> with_collinear{pt<FT>(4, 4, 6), pt<FT>(0, 4, 4), pt<FT>(0, 0, 0), pt<FT>(2, 0, 1), pt<FT>(4, 0, 2)};

@@ -15,16 +15,39 @@
 #include <stdexcept>
 #include <vector>
 
+namespace geometry::detail {
+
+/// The plane through three homogeneous points (any positive multiples of
+/// theirs), oriented as `plane_through`: the vector of the signed 3 × 3
+/// minors, of degree 3 in the input.  A point at infinity (w = 0) is a
+/// direction the plane contains.
+template <number FT> hvec<FT, 4> plane_of(hvec<FT, 4> const& p, hvec<FT, 4> const& q, hvec<FT, 4> const& r) {
+  return construct<4>(
+      [](auto const& P, auto const& Q, auto const& R) {
+        auto minor = [&](std::size_t i, std::size_t j, std::size_t k) {
+          return P[i] * (Q[j] * R[k] - Q[k] * R[j]) - P[j] * (Q[i] * R[k] - Q[k] * R[i]) + P[k] * (Q[i] * R[j] - Q[j] * R[i]);
+        };
+        return std::array<std::remove_cvref_t<decltype(P[0])>, 4>{minor(1, 2, 3), -minor(0, 2, 3), minor(0, 1, 3), -minor(0, 1, 2)};
+      },
+      p, q, r);
+}
+
+/// The direction of axis `k` (a point at infinity), made once: a copy shares its numbers.
+template <number FT> hvec<FT, 4> const& axis_direction(std::size_t k) {
+  static hvec<FT, 4> const axes[3] = {hvec<FT, 4>(std::array<FT, 4>{FT(1), FT(0), FT(0), FT(0)}),
+                                      hvec<FT, 4>(std::array<FT, 4>{FT(0), FT(1), FT(0), FT(0)}),
+                                      hvec<FT, 4>(std::array<FT, 4>{FT(0), FT(0), FT(1), FT(0)})};
+  return axes[k];
+}
+
+} // namespace geometry::detail
+
 namespace geometry::e3 {
 
 /// The plane through `p`, `q`, `r`, positive on the side from which they turn counter-clockwise.
 template <number FT>
 hyperplane<FT> plane_through(point<FT> const& p, point<FT> const& q, point<FT> const& r, hyperplane_tag tag = no_tag) {
-  std::array<FT, 3> u{FT(q.x() - p.x()), FT(q.y() - p.y()), FT(q.z() - p.z())};
-  std::array<FT, 3> v{FT(r.x() - p.x()), FT(r.y() - p.y()), FT(r.z() - p.z())};
-  auto n = cross(u, v);
-  FT d = -(n[0] * p.x() + n[1] * p.y() + n[2] * p.z());
-  return hyperplane<FT>(hvec<FT, 4>(std::array<FT, 4>{n[0], n[1], n[2], d}), tag);
+  return hyperplane<FT>(detail::plane_of(p.homogeneous(), q.homogeneous(), r.homogeneous()), tag);
 }
 
 /// The plane at infinity, positive on the whole space.
@@ -54,33 +77,13 @@ template <number FT> split_result<sub_hyperplane<FT>> split(sub_hyperplane<FT> c
 /// (degree 2 in the input), oriented so that `inside` is on its positive side.
 template <number FT>
 hyperplane<FT> edge_plane(point<FT> const& p, point<FT> const& q, std::size_t k, point<FT> const& inside) {
-  std::array<FT, 3> d{FT(q.x() - p.x()), FT(q.y() - p.y()), FT(q.z() - p.z())};
-  std::array<FT, 3> e{FT(0), FT(0), FT(0)};
-  e[k] = FT(1);
-  auto n = cross(d, e);
-  FT off = -(n[0] * p.x() + n[1] * p.y() + n[2] * p.z());
-  hyperplane<FT> b(hvec<FT, 4>(std::array<FT, 4>{n[0], n[1], n[2], off}));
+  hyperplane<FT> b(detail::plane_of(p.homogeneous(), q.homogeneous(), detail::axis_direction<FT>(k)));
   return side(b, inside) == oriented_side::negative ? b.opposite() : b;
 }
 
 } // namespace geometry::e3
 
 namespace geometry::detail {
-
-/// The plane through three homogeneous points (any positive multiples of
-/// theirs), oriented as `plane_through`: the vector of the signed 3 × 3
-/// minors, of degree 3 in the input.  A point at infinity (w = 0) is a
-/// direction the plane contains.
-template <number FT> hvec<FT, 4> plane_of(hvec<FT, 4> const& p, hvec<FT, 4> const& q, hvec<FT, 4> const& r) {
-  return construct<4>(
-      [](auto const& P, auto const& Q, auto const& R) {
-        auto minor = [&](std::size_t i, std::size_t j, std::size_t k) {
-          return P[i] * (Q[j] * R[k] - Q[k] * R[j]) - P[j] * (Q[i] * R[k] - Q[k] * R[i]) + P[k] * (Q[i] * R[j] - Q[j] * R[i]);
-        };
-        return std::array<std::remove_cvref_t<decltype(P[0])>, 4>{minor(1, 2, 3), -minor(0, 2, 3), minor(0, 1, 3), -minor(0, 1, 2)};
-      },
-      p, q, r);
-}
 
 /// The convex polygon by splitting its plane along each edge in turn (any
 /// polygon whose edge planes cut a region, strictly convex or not).
@@ -113,29 +116,21 @@ namespace geometry::e3 {
 template <number FT> sub_hyperplane<FT> convex_polygon(std::vector<point<FT>> const& v, hyperplane_tag tag = no_tag) {
   std::size_t n = v.size();
   if (n < 3) throw std::invalid_argument("e3::convex_polygon needs at least 3 vertices");
-  hyperplane<FT> support(detail::plane_of(v[0].homogeneous(), v[1].homogeneous(), v[2].homogeneous()), tag);
+  auto support = plane_through(v[0], v[1], v[2], tag);
   if (support.n.sign_at(0) == sign::zero && support.n.sign_at(1) == sign::zero && support.n.sign_at(2) == sign::zero)
     throw std::invalid_argument("e3::convex_polygon: the first three vertices are collinear");
   // Project along the largest normal component: the edge planes then contain that axis.
   std::size_t k = 0;
   for (std::size_t i = 1; i < 3; ++i)
     if (support.n.abs_greater(i, k)) k = i;
-  // The directions of the axes, made once (a copy shares their numbers).
-  static hvec<FT, 4> const axes[3] = {hvec<FT, 4>(std::array<FT, 4>{FT(1), FT(0), FT(0), FT(0)}),
-                                      hvec<FT, 4>(std::array<FT, 4>{FT(0), FT(1), FT(0), FT(0)}),
-                                      hvec<FT, 4>(std::array<FT, 4>{FT(0), FT(0), FT(1), FT(0)})};
-  hvec<FT, 4> const& direction = axes[k];
   // The polygon's own restriction eliminates the largest of all four
   // coefficients, as `whole_plane`'s does.
   sub_hyperplane<FT> s{support, dominant_axis(support.n), {}};
   s.bounds.reserve(n);
   for (std::size_t i = 0; i < n; ++i) {
-    hyperplane<FT> b(detail::plane_of(v[i].homogeneous(), v[(i + 1) % n].homogeneous(), direction));
-    // Oriented with the rest of the polygon on the positive side, every other vertex strictly.
-    auto first = side(b, v[(i + 2) % n]);
-    if (first == oriented_side::on) return detail::convex_polygon_by_splits(v, support, k);
-    if (first == oriented_side::negative) b = b.opposite();
-    for (std::size_t j = 3; j < n; ++j)
+    // Every other vertex strictly on the positive side, or the slow way.
+    auto b = edge_plane(v[i], v[(i + 1) % n], k, v[(i + 2) % n]);
+    for (std::size_t j = 2; j < n; ++j)
       if (side(b, v[(i + j) % n]) != oriented_side::positive) return detail::convex_polygon_by_splits(v, support, k);
     auto line = restrict_to(support.n, s.axis, b.n);
     s.bounds.push_back({std::move(b), std::move(line)});
@@ -336,18 +331,7 @@ template <number FT> bool approximate_vertices(e3::sub_hyperplane<FT> const& s, 
     lines[i] = *l;
   }
   for (std::size_t i = 0; i < n; ++i) {
-    auto const &a = lines[i], &b = lines[(i + 1) % n];
-    std::array<double, 3> X{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-    std::array<double, 4> r{};
-    double sum = 0;
-    for (std::size_t c = 0, j = 0; c < 4; ++c) {
-      if (c == k) continue;
-      double xj = (flip && j == 0) ? -X[j] : X[j];
-      r[c] = neg ? -((*P)[k] * xj) : (*P)[k] * xj;
-      sum += (*P)[c] * xj;
-      ++j;
-    }
-    r[k] = neg ? sum : -sum;
+    auto r = lift_values<4>(*P, k, flip, neg, cross(lines[i], lines[(i + 1) % n]));
     if (!(r[3] > 0)) return false;
     std::array<double, 3> v{r[0] / r[3], r[1] / r[3], r[2] / r[3]};
     if (!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2])) return false;
