@@ -87,6 +87,12 @@ public:
   /// are visited before those on its negative side.  Returns how many parts
   /// reached covered leaves.
   template <class Piece, class Route, class Visit> std::size_t insert(Piece piece, Route&& route, Visit&& visit) {
+    return insert(std::move(piece), route, visit, [](Piece&&) {});
+  }
+
+  /// The same, calling `hide(part)` for each part that reaches a covered leaf.
+  template <class Piece, class Route, class Visit, class Hide>
+  std::size_t insert(Piece piece, Route&& route, Visit&& visit, Hide&& hide) {
     struct work {
       node_id n;
       place at;
@@ -110,6 +116,7 @@ public:
       }
       if (is_covered(w.n)) {
         ++hidden;
+        hide(std::move(w.p));
         continue;
       }
       visit(std::move(w.p), w.n, w.at);

@@ -309,6 +309,78 @@ template <geometry::number FT> void prepare(dcel<FT>& m, coverage<FT>& v, build_
     if (m.faces()[v.as_tree().leaf_data(n)].label != -1 && !v.is_covered(n)) v.cover(at, n);
 }
 
+/// The visibility pass of a build (pass 1): fragments, front to back, into a
+/// coverage tree that knows only covered and free.  What reaches free space
+/// is visible: its flagged edges of positive length bound the cell it covers.
+/// When the tree has grown fourfold (and past 256 nodes) it is rebuilt from
+/// the boundary of the covered region, so that what was cut through the free
+/// space and through the covered region goes: a rebuild costs a few times
+/// what an insertion pays per node, and on scenes whose covered boundary
+/// stays complex it shrinks the tree little.  After a rebuild that more than
+/// halved it (free space cut up by earlier pieces, as on Platforms), it is
+/// rebuilt when it has doubled.
+template <geometry::number FT> class coverage_pass {
+public:
+  using fragment = std::vector<sphere_bound<FT>>;
+
+  explicit coverage_pass(build_options const& o) : seed_(o.seed) {
+    dcel<FT> scratch;
+    prepare(scratch, cover_, o);
+    circles_.refresh(cover_.as_tree());
+    limit_ = std::max(least_rebuild, growth_ * cover_.interior_nodes());
+  }
+
+  /// Inserts `frag`, which lies behind every fragment inserted before it:
+  /// `visible(piece)` for each part that reaches free space (the cell it
+  /// covers is then covered), `hidden(piece)` for each part that reaches
+  /// covered space.  Pieces' circles are `frag`'s and the tree's, which last
+  /// until the next `rebuild_if_grown`.  Returns the number of hidden parts.
+  template <class Visible, class Hidden> std::size_t insert(fragment frag, Visible&& visible, Hidden&& hidden) {
+    using place = typename coverage<FT>::place;
+    auto visit = [&](fragment&& piece, bsp::node_id leaf, place at) {
+      std::size_t k = piece.size();
+      for (std::size_t i = 0; i < k; ++i) {
+        auto const& b = piece[i];
+        // An edge not lying in a circle of the path, of positive length:
+        // its circle cuts the cell (`proper_edge`).
+        if (!b.flag || !proper_edge(piece, i)) continue;
+        bsp::node_id node = cover_.split(at, *b.c, index{0}, index{0});
+        circles_.keep(node, *b.c);
+        at = {node, +1};
+        leaf = cover_.as_tree().positive(node);
+      }
+      cover_.cover(at, leaf);
+      visible(std::move(piece));
+    };
+    return cover_.insert(std::move(frag), [&](fragment& p, bsp::node_id n) { return route(p, circles_.of[n.index()], signs_); },
+                         visit, hidden);
+  }
+
+  /// Rebuilds the tree when it has grown past its limit; whether it did.
+  bool rebuild_if_grown() {
+    if (cover_.interior_nodes() <= limit_) return false;
+    std::size_t before = cover_.interior_nodes();
+    cover_.rebuild(bsp::random_order(seed_ + rebuilds_));
+    circles_.refresh(cover_.as_tree());
+    ++rebuilds_;
+    growth_ = 2 * cover_.interior_nodes() < before ? 2 : 4;
+    limit_ = std::max(least_rebuild, growth_ * cover_.interior_nodes());
+    return true;
+  }
+
+  std::size_t interior_nodes() const noexcept { return cover_.interior_nodes(); }
+  std::size_t peak_interior_nodes() const noexcept { return cover_.peak_interior_nodes(); }
+  std::size_t rebuilds() const noexcept { return rebuilds_; }
+
+private:
+  static constexpr std::size_t least_rebuild = 256;
+  coverage<FT> cover_{index{0}, true};
+  node_circles<FT> circles_;
+  std::vector<geometry::sign> signs_;
+  std::uint64_t seed_;
+  std::size_t growth_ = 4, limit_ = 0, rebuilds_ = 0;
+};
+
 /// The arc of the map's half-edge `e` (even: it runs about its table
 /// circle), bounded by circles through its endpoints taken from the
 /// endpoints' own pairs: input-derived, so its predicates keep their degree.
@@ -361,10 +433,15 @@ template <geometry::number FT> void rebuild_locator(visibility_map<FT>& vm, std:
 /// construction tree, its leaves follow their faces).
 template <geometry::number FT> void simplify(visibility_map<FT>& vm);
 
-/// Builds the visibility map of `polygons` seen from `eye`.
-template <geometry::number FT>
-visibility_map<FT> build(std::vector<polygon<FT>> const& polygons, geometry::e3::point<FT> const& eye,
-                         build_options const& options = {}) {
+namespace detail {
+
+/// The build over `count` convex inputs: `shape_of(i)` is input i as an
+/// `e3::sub_hyperplane` (bounded, its bounds tagged), `corners_of(i)` its
+/// homogeneous vertices (for the window's discard), `label_of(i)` what the
+/// map reports where it is visible.
+template <geometry::number FT, class Shape, class Corners, class Label>
+visibility_map<FT> build_map(std::size_t count, Shape&& shape_of, Corners&& corners_of, Label&& label_of,
+                             geometry::e3::point<FT> const& eye, build_options const& options) {
   using namespace geometry;
   using K3 = e3::kernel<FT>;
   auto t0 = std::chrono::steady_clock::now();
@@ -372,7 +449,7 @@ visibility_map<FT> build(std::vector<polygon<FT>> const& polygons, geometry::e3:
   visibility_map<FT> vm;
   vm.seed = options.seed;
   auto& st = vm.stats;
-  st.input_polygons = polygons.size();
+  st.input_polygons = count;
 
   // 1. The polygons, their edge planes tagged as scene edges; discards.
   // A polygon whose every vertex lies on the negative side of one of the
@@ -385,14 +462,15 @@ visibility_map<FT> build(std::vector<polygon<FT>> const& polygons, geometry::e3:
         throw std::invalid_argument("svm::build: a window, exclusion or cut circle has a zero or non-finite normal");
   std::vector<hvec<FT, 4>> window;
   for (auto const& n : options.window) window.emplace_back(std::array<FT, 4>{FT(n[0]), FT(n[1]), FT(n[2]), FT(0)});
-  auto outside_window = [&](polygon<FT> const& p) {
+  auto outside_window = [&](std::uint32_t i) {
     auto toward = [](auto const& q, auto const& o, auto const& w) {
       return (w[0] * q[0] + w[1] * q[1] + w[2] * q[2]) * o[3] - (w[0] * o[0] + w[1] * o[1] + w[2] * o[2]) * q[3];
     };
+    auto const corners = corners_of(i);
     for (auto const& w : window) {
       bool all = true;
-      for (auto const& q : p.vertices)
-        if (filtered_sign(toward, q.homogeneous(), eye.homogeneous(), w) == sign::positive) {
+      for (auto const& q : corners)
+        if (filtered_sign(toward, q, eye.homogeneous(), w) == sign::positive) {
           all = false;
           break;
         }
@@ -400,20 +478,14 @@ visibility_map<FT> build(std::vector<polygon<FT>> const& polygons, geometry::e3:
     }
     return false;
   };
-  // Fragments carry the index of their polygon in `polygons`.
+  // Fragments carry the index of their input.
   bsp::fragment_list<K3, std::uint32_t> input;
-  auto convex = [](polygon<FT> const& p) {
-    auto s = e3::convex_polygon<FT>(p.vertices, p.face);
-    for (auto& b : s.bounds) b.original.tag = detail::edge_tag_bit | p.face;
-    return s;
-  };
-  for (std::uint32_t i = 0; i < polygons.size(); ++i) {
-    auto const& p = polygons[i];
-    if (!window.empty() && outside_window(p)) {
+  for (std::uint32_t i = 0; i < count; ++i) {
+    if (!window.empty() && outside_window(i)) {
       ++st.discarded_outside_window;
       continue;
     }
-    auto s = convex(p);
+    auto s = shape_of(i);
     auto side = e3::side(s.support, eye);
     if (side == oriented_side::on) {
       ++st.discarded_edge_on;
@@ -432,8 +504,8 @@ visibility_map<FT> build(std::vector<polygon<FT>> const& polygons, geometry::e3:
   st.depth_order_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_depth).count();
 
   // 3. Front to back: each fragment into a coverage tree.
-  using fragment = std::vector<detail::sphere_bound<FT>>;
-  using place = typename detail::coverage<FT>::place;
+  using fragment = std::vector<sphere_bound<FT>>;
+  using place = typename coverage<FT>::place;
   auto& m = vm.map;
   std::vector<sign> signs;
   std::size_t total = 0, next_report = 0;
@@ -450,12 +522,12 @@ visibility_map<FT> build(std::vector<polygon<FT>> const& polygons, geometry::e3:
   // Visible where it reaches a free leaf of `v`, whose payload is a face of
   // the map: the flagged edges cut the face, each adding a node, and the cell
   // inside is covered and labelled `label`.
-  auto into_map = [&](detail::coverage<FT>& v, detail::node_circles<FT>& nc, fragment frag, std::int64_t label) {
+  auto into_map = [&](coverage<FT>& v, node_circles<FT>& nc, fragment frag, std::int64_t label) {
     auto visit = [&](fragment&& piece, bsp::node_id leaf, place at) {
       index f = v.as_tree().leaf_data(leaf);
       for (auto const& b : piece) {
-        if (!b.flag || !detail::cuts(m, f, *b.c)) continue;
-        index c = m.add_circle(*b.c, detail::provenance_of(*b.c));
+        if (!b.flag || !cuts(m, f, *b.c)) continue;
+        index c = m.add_circle(*b.c, provenance_of(*b.c));
         index g = m.faces()[f].edge == none ? m.make_first_circle(c) : m.split_face(f, c);
         bsp::node_id node = v.split(at, *b.c, g, f);
         nc.keep(node, *b.c);
@@ -465,24 +537,24 @@ visibility_map<FT> build(std::vector<polygon<FT>> const& polygons, geometry::e3:
       m.face_at(f).label = label;
       v.cover(at, leaf);
     };
-    return v.insert(std::move(frag), [&](fragment& p, bsp::node_id n) { return detail::route(p, nc.of[n.index()], signs); }, visit);
+    return v.insert(std::move(frag), [&](fragment& p, bsp::node_id n) { return route(p, nc.of[n.index()], signs); }, visit);
   };
   // Over double, and when asked, one pass as the paper's: the coverage tree's
   // leaves are the map's faces, and it stays the locator.  (Over double,
   // cutting the map's arcs out of their circles would round constructed bounds.)
   bool const keep_tree = options.keep_construction_tree || std::is_same_v<FT, double>;
   if (keep_tree) {
-    detail::coverage<FT> v(index{0}, false);
-    detail::prepare(m, v, options);
-    detail::node_circles<FT> nc;
+    coverage<FT> v(index{0}, false);
+    prepare(m, v, options);
+    node_circles<FT> nc;
     nc.refresh(v.as_tree());
-    detail::circle_store<FT> fragment_circles;
+    circle_store<FT> fragment_circles;
     auto t_visible = std::chrono::steady_clock::now();
     bsp::for_each_front_to_back(tree, eye, [&](auto const& fr) {
       ++st.fragments;
       report();
       fragment_circles.clear();
-      st.hidden_pieces += into_map(v, nc, detail::project(fr.piece, eye, fragment_circles), polygons[fr.id].face);
+      st.hidden_pieces += into_map(v, nc, project(fr.piece, eye, fragment_circles), label_of(fr.id));
     });
     st.visible_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_visible).count();
     st.v_nodes = st.v_nodes_peak = st.map_tree_nodes = v.interior_nodes();
@@ -490,60 +562,28 @@ visibility_map<FT> build(std::vector<polygon<FT>> const& polygons, geometry::e3:
     vm.locator_is_construction_tree = true;
     st.locator_nodes = st.v_nodes;
   } else {
-    // Pass 1: what is visible.  The coverage tree knows only covered and
-    // free; each visible piece is kept, its flagged edges bound the cell it
-    // covers, and when the tree has grown fourfold it is rebuilt from the
-    // boundary of the covered region, so that what was cut through the free
-    // space and through the covered region goes.
-    detail::coverage<FT> cover(index{0}, true);
-    {
-      dcel<FT> scratch;
-      detail::prepare(scratch, cover, options);
-    }
-    detail::node_circles<FT> nc;
-    nc.refresh(cover.as_tree());
+    // Pass 1: what is visible (`coverage_pass`).
+    coverage_pass<FT> pass(options);
     // The circles of visible pieces, for both passes; a fragment's circles
     // are made in `scratch` and moved here only when some piece of it is
     // visible, so that hidden fragments leave nothing behind.
-    detail::circle_store<FT> circles, scratch;
+    circle_store<FT> circles, scratch;
     struct visible_piece {
       fragment bounds;
       std::uint32_t polygon;
     };
     std::vector<visible_piece> visible;
-    // Per polygon: its fragments, and how many of them were wholly visible.
-    std::vector<std::uint32_t> fragments_of(polygons.size(), 0), whole_of(polygons.size(), 0);
-    // Rebuilt when it has grown fourfold (and past 256 nodes): a rebuild
-    // costs a few times what an insertion pays per node, and on scenes whose
-    // covered boundary stays complex it shrinks the tree little.  After a
-    // rebuild that more than halved it (free space cut up by earlier pieces,
-    // as on Platforms), it is rebuilt when it has doubled.
-    std::size_t const least_rebuild = 256;
-    std::size_t growth = 4;
-    std::size_t limit = std::max(least_rebuild, growth * cover.interior_nodes());
+    // Per input: its fragments, and how many of them were wholly visible.
+    std::vector<std::uint32_t> fragments_of(count, 0), whole_of(count, 0);
     auto t_visible = std::chrono::steady_clock::now();
     bsp::for_each_front_to_back(tree, eye, [&](auto const& fr) {
       ++st.fragments;
       report();
       std::size_t first = visible.size();
-      auto visit = [&](fragment&& piece, bsp::node_id leaf, place at) {
-        std::size_t k = piece.size();
-        for (std::size_t i = 0; i < k; ++i) {
-          auto const& b = piece[i];
-          // An edge not lying in a circle of the path, of positive length:
-          // its circle cuts the cell (`detail::proper_edge`).
-          if (!b.flag || !detail::proper_edge(piece, i)) continue;
-          bsp::node_id node = cover.split(at, *b.c, index{0}, index{0});
-          nc.keep(node, *b.c);
-          at = {node, +1};
-          leaf = cover.as_tree().positive(node);
-        }
-        cover.cover(at, leaf);
-        visible.push_back({std::move(piece), fr.id});
-      };
       scratch.clear();
-      fragment projected = detail::project(fr.piece, eye, scratch);
-      std::size_t hidden = cover.insert(projected, [&](fragment& p, bsp::node_id n) { return detail::route(p, nc.of[n.index()], signs); }, visit);
+      fragment projected = project(fr.piece, eye, scratch);
+      std::size_t hidden = pass.insert(
+          projected, [&](fragment&& piece) { visible.push_back({std::move(piece), fr.id}); }, [](fragment&&) {});
       st.hidden_pieces += hidden;
       st.visible_pieces += visible.size() - first;
       ++fragments_of[fr.id];
@@ -565,28 +605,21 @@ visibility_map<FT> build(std::vector<polygon<FT>> const& polygons, geometry::e3:
             b.c = it->second;
           }
       }
-      if (cover.interior_nodes() > limit) {
-        std::size_t before = cover.interior_nodes();
-        cover.rebuild(bsp::random_order(options.seed + st.rebuilds));
-        nc.refresh(cover.as_tree());
-        ++st.rebuilds;
-        growth = 2 * cover.interior_nodes() < before ? 2 : 4;
-        limit = std::max(least_rebuild, growth * cover.interior_nodes());
-      }
+      pass.rebuild_if_grown();
     });
-    st.v_nodes = cover.interior_nodes();
-    st.v_nodes_peak = cover.peak_interior_nodes();
+    st.rebuilds = pass.rebuilds();
+    st.v_nodes = pass.interior_nodes();
+    st.v_nodes_peak = pass.peak_interior_nodes();
     // Neither the depth order nor the coverage tree is needed any more.
     tree = decltype(tree){};
-    cover = detail::coverage<FT>(index{0}, true);
-    nc = detail::node_circles<FT>{};
+    pass = coverage_pass<FT>(build_options{});
     // A polygon all of whose fragments were wholly visible is visible whole:
     // the map takes its own projection, without the depth order's cuts.
     {
       std::erase_if(visible, [&](visible_piece const& p) { return fragments_of[p.polygon] >= 2 && whole_of[p.polygon] == fragments_of[p.polygon]; });
-      for (std::uint32_t i = 0; i < polygons.size(); ++i)
+      for (std::uint32_t i = 0; i < count; ++i)
         if (fragments_of[i] >= 2 && whole_of[i] == fragments_of[i])
-          visible.push_back({detail::project(convex(polygons[i]), eye, circles), i});
+          visible.push_back({project(shape_of(i), eye, circles), i});
     }
     st.map_pieces = visible.size();
     st.visible_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_visible).count();
@@ -595,13 +628,13 @@ visibility_map<FT> build(std::vector<polygon<FT>> const& polygons, geometry::e3:
     auto t_map = std::chrono::steady_clock::now();
     std::mt19937_64 rng(options.seed);
     std::shuffle(visible.begin(), visible.end(), rng);
-    detail::coverage<FT> v(index{0}, true);
-    detail::prepare(m, v, options);
-    detail::node_circles<FT> mc;
+    coverage<FT> v(index{0}, true);
+    prepare(m, v, options);
+    node_circles<FT> mc;
     mc.refresh(v.as_tree());
     for (auto& p : visible) {
       for (auto& b : p.bounds) b.flag = true;
-      st.overlapping_pieces += into_map(v, mc, std::move(p.bounds), polygons[p.polygon].face);
+      st.overlapping_pieces += into_map(v, mc, std::move(p.bounds), label_of(p.polygon));
     }
     st.map_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_map).count();
     st.map_tree_nodes = v.peak_interior_nodes();
@@ -613,11 +646,53 @@ visibility_map<FT> build(std::vector<polygon<FT>> const& polygons, geometry::e3:
   if (options.simplify)
     simplify(vm);
   else if (!keep_tree)
-    detail::rebuild_locator(vm, options.seed);
+    rebuild_locator(vm, options.seed);
   st.simplify_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_simplify).count();
   st.filter_fallbacks = filter_stats().fallbacks - fallbacks0;
   st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return vm;
+}
+
+} // namespace detail
+
+/// Builds the visibility map of `polygons` seen from `eye`.
+template <geometry::number FT>
+visibility_map<FT> build(std::vector<polygon<FT>> const& polygons, geometry::e3::point<FT> const& eye,
+                         build_options const& options = {}) {
+  auto shape = [&](std::uint32_t i) {
+    auto const& p = polygons[i];
+    auto s = geometry::e3::convex_polygon<FT>(p.vertices, p.face);
+    for (auto& b : s.bounds) b.original.tag = detail::edge_tag_bit | p.face;
+    return s;
+  };
+  auto corners = [&](std::uint32_t i) {
+    std::vector<geometry::hvec<FT, 4>> out;
+    for (auto const& q : polygons[i].vertices) out.push_back(q.homogeneous());
+    return out;
+  };
+  auto label = [&](std::uint32_t i) { return static_cast<std::int64_t>(polygons[i].face); };
+  return detail::build_map<FT>(polygons.size(), shape, corners, label, eye, options);
+}
+
+/// An input polygon given by planes: its plane and bounding planes (a
+/// bounded `e3::sub_hyperplane`, counter-clockwise seen from its plane's
+/// positive side), and the label the map reports where it is visible.  The
+/// planes must be input-derived (as those of `e3::convex_polygon`, or planes
+/// through a point and such a polygon's edges, as shadows make them), so
+/// that every predicate keeps its degree bound.
+template <geometry::number FT> struct convex_piece {
+  geometry::e3::sub_hyperplane<FT> shape;
+  std::int64_t label = 0;
+};
+
+/// Builds the visibility map of convex `pieces` seen from `eye`.
+template <geometry::number FT>
+visibility_map<FT> build(std::vector<convex_piece<FT>> const& pieces, geometry::e3::point<FT> const& eye,
+                         build_options const& options = {}) {
+  auto shape = [&](std::uint32_t i) { return pieces[i].shape; };
+  auto corners = [&](std::uint32_t i) { return geometry::e3::homogeneous_vertices(pieces[i].shape); };
+  auto label = [&](std::uint32_t i) { return pieces[i].label; };
+  return detail::build_map<FT>(pieces.size(), shape, corners, label, eye, options);
 }
 
 namespace detail {
