@@ -243,7 +243,38 @@ expect_error "csg: unknown output format" "\.ply" "$genbsp" csg "$work/b1.off" "
 expect_error "csg: no xor" "try --help" "$genbsp" csg "$work/b1.off" "$work/b2.off" --op xor -o "$work/x.off"
 check "csg: no file after an error" test ! -e "$work/x.off"
 
-for sub in map locate stats scene render view bool csg; do
+# shadow: a light at the eye casts the cube's near face (z = 2, side 1) on
+# the square at z = 5, scaled by 5/2: 6.25 of its 64 are in shadow.
+"$genbsp" shadow "$work/scene.off" --light 0,0,0 -o "$work/shadow.json"
+face_field() { python3 -c 'import json, sys; f = [x for x in json.load(open(sys.argv[1]))["faces"] if x["face"] == int(sys.argv[2])][0]; v = eval(sys.argv[3], {}, f); print(v)' "$@"; }
+check "shadow json: the square's shadowed area" close_to "$(face_field "$work/shadow.json" 6 shadowed_area)" 6.25
+check "shadow json: the square's lit area" close_to "$(face_field "$work/shadow.json" 6 'lit_area[0]')" 57.75
+check "shadow json: the near face is lit whole" close_to "$(face_field "$work/shadow.json" 0 'lit_area[0]')" 1
+check "shadow json: the far face turns its back" close_to "$(face_field "$work/shadow.json" 1 shadowed_area)" 1
+"$genbsp" shadow "$work/scene.off" --light 0,0,0 --light 1,1,0 -o "$work/shadow.off"
+check "shadow off: pieces written, and read back" "$genbsp" stats "$work/shadow.off" --eye 0,0,1/3
+"$genbsp" shadow "$work/scene.off" --light 0,0,0 -o "$work/shadow.obj"
+check "shadow obj: coloured vertices" test "$(grep -c '^v [^ ]* [^ ]* [^ ]* [^ ]* [^ ]* [^ ]*$' "$work/shadow.obj")" -ge 12
+expect_error "shadow: unknown format" "\.ply" "$genbsp" shadow "$work/scene.off" --light 0,0,0 -o "$work/x.ply"
+expect_error "shadow: a light is needed" "--light" "$genbsp" shadow "$work/scene.off" -o "$work/x.json"
+expect_error "shadow: bad light" "--light" "$genbsp" shadow "$work/scene.off" --light 0,0 -o "$work/x.json"
+check "shadow: no file after an error" test ! -e "$work/x.json"
+# render --shadows: from the eye, a light beside it shows part of the cube's shadow on the square.
+"$genbsp" render "$work/scene.off" --eye 0,0,0 --dir 0,0,1 --up 0,1,0 --style id --light 1,1,0 --shadows --size 200x150 -o "$work/shadow-id.svg"
+check "render --shadows id: the square lit (#000007)" grep -q 'data-face="6" fill="#000007"' "$work/shadow-id.svg"
+check "render --shadows id: and in shadow (#800007)" grep -q 'data-face="6" fill="#800007"' "$work/shadow-id.svg"
+check "render --shadows id: the near face lit (#000001)" grep -q 'data-face="0" fill="#000001"' "$work/shadow-id.svg"
+"$genbsp" render "$work/scene.off" --eye 0,0,0 --dir 0,0,1 --up 0,1,0 --style lines --light 1,1,0 --shadows -o "$work/shadow-lines.svg"
+check "render --shadows lines: shadow boundaries in their own group" grep -q 'id="shadow-boundaries"' "$work/shadow-lines.svg"
+"$genbsp" render "$work/scene.off" --eye 0,0,0 --dir 0,0,1 --light 1,1,0 --light -1,0,0 --shadows -o "$work/shadow.pdf"
+check "render --shadows: PDF" grep -q '^%PDF-' "$work/shadow.pdf"
+expect_error "render: --shadows needs a light" "--light" "$genbsp" render "$work/scene.off" --eye 0,0,0 --shadows -o "$work/x.svg"
+expect_error "render: no shadows from the sun yet" "--sun" "$genbsp" render "$work/scene.off" --eye 0,0,0 --sun 0,0,1 --shadows -o "$work/x.svg"
+"$genbsp" view "$work/scene.off" --eye 0,0,0 --light 1,1,0 -o "$work/view-lit.html"
+check "view --light: faces list the lights that reach them" grep -q '"polygon":6,"lights":\[0\]' "$work/view-lit.html"
+check "view --light: and the shadowed ones none" grep -q '"polygon":6,"lights":\[\]' "$work/view-lit.html"
+
+for sub in map locate stats scene render view shadow bool csg; do
   "$genbsp" "$sub" --help >"$work/help" 2>&1
   check "$sub --help exits 0" test $? -eq 0
   check "$sub --help says what it does" grep -q "Usage" "$work/help"

@@ -1,5 +1,5 @@
 // genbsp: the command-line program.  Subcommands map, locate, stats, render,
-// view, scene (here) and bool, csg (boolean.cpp).
+// view, shadow, scene (here) and bool, csg (boolean.cpp).
 // Bad input gets one line on stderr (naming file and line where there is
 // one) and exit status 2; output files are written whole or not at all.
 #include <geometry/io/polygons.hpp>
@@ -9,6 +9,7 @@
 #include <svm/render/cairo.hpp>
 #include <svm/render/svg.hpp>
 #include <svm/scenes.hpp>
+#include <svm/shadow.hpp>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -88,8 +89,35 @@ loaded load(map_job const& job) {
   return l;
 }
 
+/// Point lights for shadows: with any, the map is built from the scene's
+/// lit and shadowed pieces, its labels indices in `regions`.
+struct shadow_job {
+  std::vector<geometry::e3::point<rational>> lights;
+  std::vector<svm::lit_region>* regions = nullptr;
+  svm::shadow_statistics* stats = nullptr;
+};
+
+/// The map of `polygons` from `eye`, or of their shadow pieces.
+template <class FT>
+svm::visibility_map<FT> map_of(std::vector<svm::polygon<FT>> const& polygons, geometry::e3::point<FT> const& eye, svm::build_options const& o,
+                               shadow_job const& shadows) {
+  if (shadows.lights.empty()) return svm::build<FT>(polygons, eye, o);
+  std::vector<geometry::e3::point<FT>> lights;
+  for (auto const& p : shadows.lights) {
+    if constexpr (std::is_same_v<FT, rational>)
+      lights.push_back(p);
+    else
+      lights.emplace_back(p.x().template convert_to<double>(), p.y().template convert_to<double>(), p.z().template convert_to<double>());
+  }
+  auto sh = svm::compute_shadows<FT>(polygons, lights, {.seed = o.seed});
+  if (shadows.stats) *shadows.stats = sh.stats;
+  auto scene = svm::label_regions(sh, polygons);
+  if (shadows.regions) *shadows.regions = std::move(scene.regions);
+  return svm::build<FT>(scene.pieces, eye, o);
+}
+
 /// The map in either number type, then a function of it.
-template <class F> auto with_map(map_job const& job, loaded const& l, F&& f, svm::build_options o = {}) {
+template <class F> auto with_map(map_job const& job, loaded const& l, F&& f, svm::build_options o = {}, shadow_job const& shadows = {}) {
   auto eye = parse_point(job.eye_text, "--eye");
   o.simplify = !job.no_simplify;
   o.cull_backfaces = job.cull;
@@ -120,11 +148,11 @@ template <class F> auto with_map(map_job const& job, loaded const& l, F&& f, svm
       polys.push_back({std::move(v), p.face});
     }
     geometry::e3::point<double> e(eye.x().convert_to<double>(), eye.y().convert_to<double>(), eye.z().convert_to<double>());
-    return f(svm::build<double>(polys, e, o));
+    return f(map_of<double>(polys, e, o, shadows));
   }
   std::vector<svm::polygon<rational>> polys;
   for (auto const& p : l.prepared.polygons) polys.push_back({p.vertices, p.face});
-  return f(svm::build<rational>(polys, eye, o));
+  return f(map_of<rational>(polys, eye, o, shadows));
 }
 
 json size_json(svm::map_size const& s) { return {{"vertices", s.vertices}, {"edges", s.edges}, {"faces", s.faces}}; }
@@ -163,7 +191,9 @@ template <class FT> json stats_json(svm::visibility_map<FT> const& vm, loaded co
 /// MAP.json: unit vertices, faces with their cycles (counter-clockwise seen
 /// from outside the sphere, face on the left; the outer cycle first: the one
 /// whose left side is smallest).
-template <class FT> json map_json(svm::visibility_map<FT> const& vm, geometry::e3::point<rational> const& eye, loaded const& l) {
+template <class FT>
+json map_json(svm::visibility_map<FT> const& vm, geometry::e3::point<rational> const& eye, loaded const& l,
+              std::vector<svm::lit_region> const* regions = nullptr) {
   auto const& m = vm.map;
   json vertices = json::array();
   for (svm::index v = 0; v < m.vertices().size(); ++v) {
@@ -188,7 +218,16 @@ template <class FT> json map_json(svm::visibility_map<FT> const& vm, geometry::e
     std::sort(cs.begin(), cs.end(), [](auto const& a, auto const& b) { return a.first < b.first; });
     json jc = json::array();
     for (auto& c : cs) jc.push_back(std::move(c.second));
-    faces.push_back({{"polygon", m.faces()[f].label}, {"cycles", std::move(jc)}});
+    std::int64_t label = m.faces()[f].label;
+    if (regions && label >= 0) {
+      auto const& r = (*regions)[static_cast<std::size_t>(label)];
+      json lit = json::array();
+      for (std::size_t k = 0; k < svm::max_lights; ++k)
+        if ((r.lights >> k) & 1u) lit.push_back(k);
+      faces.push_back({{"polygon", r.face}, {"lights", std::move(lit)}, {"cycles", std::move(jc)}});
+    } else {
+      faces.push_back({{"polygon", label}, {"cycles", std::move(jc)}});
+    }
   }
   return {{"eye", {eye.x().convert_to<double>(), eye.y().convert_to<double>(), eye.z().convert_to<double>()}},
           {"vertices", std::move(vertices)},
@@ -220,6 +259,11 @@ std::string off_text(svm::scenes::scene const& s) {
 svm::vec3 parse_vec(std::string const& text, std::string const& option) {
   auto p = parse_point(text, option);
   return {p.x().convert_to<double>(), p.y().convert_to<double>(), p.z().convert_to<double>()};
+}
+
+/// At most `svm::max_lights` lights.
+void check_lights(std::vector<geometry::e3::point<rational>> const& lights, loaded const&) {
+  if (lights.size() > svm::max_lights) throw usage_error("--light: at most 64 lights");
 }
 
 /// What `genbsp render` knows of each input face: its colour and its plane.
@@ -267,6 +311,133 @@ void write_drawing(svm::render::drawing const& d, std::string const& path, int d
   }
 }
 
+/// `genbsp shadow`: the pieces as coloured OFF or OBJ (decimal vertices,
+/// 17 significant digits), or a JSON summary of areas per face.
+std::string shadow_output(map_job const& job, std::vector<std::string> const& light_texts, std::string const& out) {
+  std::string ext = std::filesystem::path(out).extension().string();
+  for (auto& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  if (ext != ".off" && ext != ".obj" && ext != ".json")
+    throw usage_error(out + ": unknown output format '" + ext + "' (use .off, .obj or .json)");
+  auto l = load(job);
+  std::vector<geometry::e3::point<rational>> lights;
+  for (auto const& t : light_texts) lights.push_back(parse_point(t, "--light"));
+  check_lights(lights, l);
+  auto colours = [&] {
+    std::vector<std::optional<geometry::io::rgb>> c;
+    for (auto const& f : geometry::io::read_scene(job.scene_path).faces) c.push_back(f.colour);
+    return c;
+  }();
+  svm::shadow_options so;
+  if (job.progress)
+    so.progress = [](double f) { std::fprintf(stderr, "genbsp: shadows %d%%\n", static_cast<int>(f * 100)); };
+  auto write = [&]<class FT>(std::vector<svm::polygon<FT>> const& polygons, std::vector<geometry::e3::point<FT>> const& ls) {
+    auto sh = svm::compute_shadows<FT>(polygons, ls, so);
+    auto d = [](FT const& x) {
+      if constexpr (std::is_same_v<FT, double>) return x;
+      else return x.template convert_to<double>();
+    };
+    // Per piece: its vertices in doubles, its projected area and the axis.
+    struct shown {
+      std::vector<std::array<double, 3>> v;
+      double area = 0; // in space
+    };
+    std::vector<shown> pieces;
+    for (auto const& p : sh.pieces) {
+      shown s;
+      if (auto vs = geometry::e3::vertices(p.shape))
+        for (auto const& q : *vs) s.v.push_back({d(q.x()), d(q.y()), d(q.z())});
+      // The area in space: the vertices' cross products (Newell).
+      std::array<double, 3> n{0, 0, 0};
+      for (std::size_t i = 0; i < s.v.size(); ++i) {
+        auto const &a = s.v[i], &b = s.v[(i + 1) % s.v.size()];
+        n[0] += (a[1] - b[1]) * (a[2] + b[2]), n[1] += (a[2] - b[2]) * (a[0] + b[0]), n[2] += (a[0] - b[0]) * (a[1] + b[1]);
+      }
+      s.area = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) / 2;
+      pieces.push_back(std::move(s));
+    }
+    auto face_of = [&](std::size_t i) { return polygons[sh.pieces[i].polygon].face; };
+    auto rgb = [&](std::size_t i) {
+      std::uint32_t f = face_of(i);
+      geometry::io::rgb c = f < colours.size() && colours[f] ? *colours[f] : geometry::io::rgb{0.85, 0.85, 0.85};
+      double k = sh.pieces[i].lights != 0 ? 1.0 : 0.3;
+      auto byte = [k](double x) { return static_cast<int>(std::lround(std::clamp(x * k, 0.0, 1.0) * 255)); };
+      return std::array<int, 3>{byte(c.r), byte(c.g), byte(c.b)};
+    };
+    char buf[160];
+    std::string text;
+    if (ext == ".off") {
+      std::size_t nv = 0;
+      for (auto const& p : pieces) nv += p.v.size();
+      text = "OFF\n# genbsp shadow: lit pieces in their colour, shadowed ones dark\n" + std::to_string(nv) + " " +
+             std::to_string(pieces.size()) + " 0\n";
+      for (auto const& p : pieces)
+        for (auto const& v : p.v) std::snprintf(buf, sizeof buf, "%.17g %.17g %.17g\n", v[0], v[1], v[2]), text += buf;
+      std::size_t k = 0;
+      for (std::size_t i = 0; i < pieces.size(); ++i) {
+        text += std::to_string(pieces[i].v.size());
+        for (std::size_t j = 0; j < pieces[i].v.size(); ++j) text += " " + std::to_string(k++);
+        auto c = rgb(i);
+        std::snprintf(buf, sizeof buf, " %d %d %d\n", c[0], c[1], c[2]);
+        text += buf;
+      }
+      return text;
+    }
+    if (ext == ".obj") {
+      text = "# genbsp shadow: lit pieces in their colour, shadowed ones dark (vertex colours)\n";
+      std::size_t k = 1;
+      for (std::size_t i = 0; i < pieces.size(); ++i) {
+        auto c = rgb(i);
+        for (auto const& v : pieces[i].v)
+          std::snprintf(buf, sizeof buf, "v %.17g %.17g %.17g %.6g %.6g %.6g\n", v[0], v[1], v[2], c[0] / 255.0, c[1] / 255.0, c[2] / 255.0),
+              text += buf;
+        text += "f";
+        for (std::size_t j = 0; j < pieces[i].v.size(); ++j) text += " " + std::to_string(k++);
+        text += "\n";
+      }
+      return text;
+    }
+    // JSON: per input face, its area, the area each light reaches, the area
+    // no light reaches.
+    std::size_t nf = l.input_faces;
+    std::vector<double> area(nf, 0), dark(nf, 0);
+    std::vector<std::vector<double>> lit(nf, std::vector<double>(ls.size(), 0));
+    std::vector<char> present(nf, 0);
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+      std::uint32_t f = face_of(i);
+      present[f] = 1;
+      area[f] += pieces[i].area;
+      if (sh.pieces[i].lights == 0) dark[f] += pieces[i].area;
+      for (std::size_t k = 0; k < ls.size(); ++k)
+        if ((sh.pieces[i].lights >> k) & 1u) lit[f][k] += pieces[i].area;
+    }
+    json faces = json::array();
+    for (std::size_t f = 0; f < nf; ++f)
+      if (present[f]) faces.push_back({{"face", f}, {"area", area[f]}, {"lit_area", lit[f]}, {"shadowed_area", dark[f]}});
+    json jl = json::array();
+    for (auto const& t : lights) jl.push_back({t.x().convert_to<double>(), t.y().convert_to<double>(), t.z().convert_to<double>()});
+    auto const& st = sh.stats;
+    json stats{{"input_faces", l.input_faces}, {"polygons", st.input_polygons},     {"lights", st.lights},
+               {"fragments", st.fragments},   {"lit_parts", st.lit_parts},         {"shadowed_parts", st.shadowed_parts},
+               {"pieces", st.pieces},         {"filter_fallbacks", st.filter_fallbacks}, {"seconds", st.seconds},
+               {"peak_bytes", peak_bytes()}};
+    return json{{"lights", std::move(jl)}, {"faces", std::move(faces)}, {"stats", std::move(stats)}}.dump(1) + "\n";
+  };
+  if (job.number == "double") {
+    std::vector<svm::polygon<double>> polys;
+    for (auto const& p : l.prepared.polygons) {
+      std::vector<geometry::e3::point<double>> v;
+      for (auto const& q : p.vertices) v.emplace_back(q.x().convert_to<double>(), q.y().convert_to<double>(), q.z().convert_to<double>());
+      polys.push_back({std::move(v), p.face});
+    }
+    std::vector<geometry::e3::point<double>> ls;
+    for (auto const& q : lights) ls.emplace_back(q.x().convert_to<double>(), q.y().convert_to<double>(), q.z().convert_to<double>());
+    return write(polys, ls);
+  }
+  std::vector<svm::polygon<rational>> polys;
+  for (auto const& p : l.prepared.polygons) polys.push_back({p.vertices, p.face});
+  return write(polys, lights);
+}
+
 int run(int argc, char** argv) {
   CLI::App app{"genbsp: binary space partitioning for exact geometric computing"};
   app.require_subcommand(1);
@@ -289,7 +460,9 @@ int run(int argc, char** argv) {
 
   map_job rj;
   std::string render_out, look_text, dir_text, up_text, size_text, projection_name = "perspective",
-                           style_name = "shaded", light_text, shift_text;
+                           style_name = "shaded", sun_text, shift_text;
+  std::vector<std::string> render_lights;
+  bool render_shadows = false;
   double fov = 0, crease = 0, tolerance = 0.1;
   int digits = 2;
   auto* render = app.add_subcommand("render", "draw a scene from an eye as SVG, PDF, EPS or PNG, hidden parts removed exactly");
@@ -303,7 +476,9 @@ int run(int argc, char** argv) {
                      "perspective, stereographic, fisheye (equidistant), fisheye-equisolid, equirectangular, or cube (six perspective files OUT-front, -right, -back, -left, -up, -down)")
       ->check(CLI::IsMember({"perspective", "stereographic", "fisheye", "fisheye-equidistant", "fisheye-equisolid", "equirectangular", "cube"}));
   render->add_option("--style", style_name, "shaded (default), flat, lines or id")->check(CLI::IsMember({"shaded", "flat", "lines", "id"}));
-  render->add_option("--light", light_text, "direction towards the light, X,Y,Z (default: a head light at the eye)");
+  render->add_option("--light", render_lights, "a point light at X,Y,Z (read exactly; repeat for more, up to 64; default: a head light at the eye)");
+  render->add_option("--sun", sun_text, "or a light at infinity: the direction towards it, DX,DY,DZ (shading only)");
+  render->add_flag("--shadows", render_shadows, "cast the lights' shadows, exactly (lit parts shaded per light, the rest ambient)");
   render->add_option("--crease", crease, "lines: draw edges between polygons only where their planes meet at more than this angle (degrees)")->check(CLI::Range(0.0, 180.0));
   render->add_option("--shift", shift_text, "perspective image-plane shift SX,SY in image half-widths (keeps verticals vertical)");
   render->add_option("--tolerance", tolerance, "fisheye and panorama: arcs subdivided to this many pixels (default 0.1)")->check(CLI::Range(0.001, 100.0));
@@ -315,6 +490,18 @@ int run(int argc, char** argv) {
   auto* view = app.add_subcommand("view", "write one self-contained HTML page that looks around from the eye (docs/viewer.md)");
   vj.add_options(*view);
   view->add_option("-o,--output", view_out, "output VIEWER.html (opens from disk, no network)")->required();
+  std::vector<std::string> view_lights;
+  view->add_option("--light", view_lights, "a point light at X,Y,Z whose shadows the page shows (repeat for more, up to 64)");
+
+  map_job hj;
+  std::vector<std::string> shadow_lights;
+  std::string shadow_out;
+  auto* shadow = app.add_subcommand("shadow", "split every face into lit and shadowed pieces, exactly, as OFF, OBJ (coloured) or JSON (areas)");
+  shadow->add_flag("--progress", hj.progress, "report progress on standard error");
+  shadow->add_option("SCENE", hj.scene_path, "scene file: OFF, OBJ or STL (face index = order in the file)")->required();
+  shadow->add_option("--light", shadow_lights, "a point light at X,Y,Z (read exactly; repeat for more, up to 64)")->required();
+  shadow->add_option("--number", hj.number, "arithmetic: exact (default) or double")->check(CLI::IsMember({"exact", "double"}));
+  shadow->add_option("-o,--output", shadow_out, "output OUT.off or OUT.obj (pieces coloured lit or dark), or OUT.json (areas per face)")->required();
 
   std::string family, scene_out;
   std::size_t n = 8;
@@ -470,7 +657,21 @@ int run(int argc, char** argv) {
     ro.crease = crease;
     ro.tolerance = tolerance;
     ro.eye = eye;
-    if (!light_text.empty()) ro.light = parse_vec(light_text, "--light");
+    if (!sun_text.empty()) {
+      if (!render_lights.empty()) throw usage_error("--sun and --light: give one kind of light");
+      if (render_shadows) throw usage_error("--sun: shadows from a light at infinity are not supported yet; put a --light far away");
+      ro.light = parse_vec(sun_text, "--sun");
+    }
+    if (render_shadows && render_lights.empty()) throw usage_error("--shadows: give at least one --light X,Y,Z");
+    shadow_job shadows;
+    std::vector<svm::lit_region> regions;
+    for (auto const& t : render_lights) {
+      shadows.lights.push_back(parse_point(t, "--light"));
+      ro.lights.push_back(parse_vec(t, "--light"));
+    }
+    check_lights(shadows.lights, l);
+    if (!render_shadows) shadows.lights.clear();
+    else ro.regions = &regions, shadows.regions = &regions;
     // The views to draw: one, or the six faces of a cube.
     std::vector<std::pair<svm::camera, std::string>> views;
     if (cube) {
@@ -504,7 +705,7 @@ int run(int argc, char** argv) {
         throw usage_error(e.what());
       }
       svm::build_options o = pr->window_options();
-      auto d = with_map(rj, l, [&](auto const& vm) { return svm::render::draw(vm, *pr, infos, ro); }, o);
+      auto d = with_map(rj, l, [&](auto const& vm) { return svm::render::draw(vm, *pr, infos, ro); }, o, shadows);
       drawings.push_back({std::move(d), path});
     }
     for (auto const& [d, path] : drawings) write_drawing(d, path, digits);
@@ -525,7 +726,13 @@ int run(int argc, char** argv) {
       std::snprintf(hex, sizeof hex, "#%02x%02x%02x", byte(f.colour->r), byte(f.colour->g), byte(f.colour->b));
       colours.push_back(hex);
     }
-    auto map_text = with_map(vj, l, [&](auto const& vm) { return map_json(vm, eye, l).dump(); });
+    shadow_job shadows;
+    std::vector<svm::lit_region> regions;
+    for (auto const& t : view_lights) shadows.lights.push_back(parse_point(t, "--light"));
+    check_lights(shadows.lights, l);
+    shadows.regions = &regions;
+    auto map_text = with_map(
+        vj, l, [&](auto const& vm) { return map_json(vm, eye, l, shadows.lights.empty() ? nullptr : &regions).dump(); }, {}, shadows);
     std::string page(genbsp_tool::viewer_html());
     auto put = [&](std::string const& placeholder, std::string const& value) {
       auto at = page.find(placeholder);
@@ -541,6 +748,8 @@ int run(int argc, char** argv) {
     put("/*GENBSP_MAP*/null", safe(map_text));
     put("/*GENBSP_COLORS*/null", safe(colours.dump()));
     write_file(view_out, page);
+  } else if (*shadow) {
+    write_file(shadow_out, shadow_output(hj, shadow_lights, shadow_out));
   } else if (*scene) {
     svm::scenes::scene s = family == "bricks"          ? svm::scenes::bricks(n)
                            : family == "hidden-bricks" ? svm::scenes::hidden_bricks(n)

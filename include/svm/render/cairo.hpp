@@ -30,10 +30,13 @@ inline void draw_cairo(cairo_t* cr, drawing const& d) {
     cairo_set_line_width(cr, 1);
     cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
     cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
-    for (auto const& line : d.polylines) {
-      for (std::size_t i = 0; i < line.size(); ++i)
-        (i == 0 ? cairo_move_to : cairo_line_to)(cr, line[i].x, line[i].y);
-      cairo_stroke(cr);
+    for (auto const* lines : {&d.polylines, &d.thin_polylines}) {
+      cairo_set_line_width(cr, lines == &d.polylines ? 1 : 0.35);
+      for (auto const& line : *lines) {
+        for (std::size_t i = 0; i < line.size(); ++i)
+          (i == 0 ? cairo_move_to : cairo_line_to)(cr, line[i].x, line[i].y);
+        cairo_stroke(cr);
+      }
     }
     return;
   }

@@ -13,6 +13,7 @@
 
 #include "../camera.hpp"
 #include "../query.hpp"
+#include "../shadow.hpp"
 
 #include <cstdint>
 #include <map>
@@ -32,7 +33,7 @@ enum class style {
   shaded, ///< Lambert shading of each polygon's colour
   flat,   ///< each polygon's colour
   lines,  ///< visible edges only, black polylines
-  id,     ///< fill colour = polygon index + 1 as \#RRGGBB, no stroke, no background
+  id,     ///< fill colour = polygon index + 1 as \#RRGGBB (+ 0x800000 in shadow), no stroke, no background
 };
 
 inline std::optional<style> style_from_name(std::string_view s) {
@@ -59,6 +60,8 @@ struct region {
   std::vector<command> path;
   std::int64_t polygon = -1; ///< the input face seen there
   rgb fill;
+  /// With shadows: the lights that reach it (bit k: light k), else all ones.
+  std::uint64_t lights = ~std::uint64_t{0};
 };
 
 /// A drawing: regions, polylines (style `lines`), size and background.
@@ -68,6 +71,8 @@ struct drawing {
   std::optional<rgb> background; ///< none: transparent
   std::vector<region> regions;
   std::vector<std::vector<pixel>> polylines;
+  /// Style `lines` with shadows: shadow boundaries, drawn thin.
+  std::vector<std::vector<pixel>> thin_polylines;
   /// Style `lines`: visible edges drawn, an edge being a maximal piece of one
   /// great circle (pieces of one circle joined end to end count once).
   std::size_t edges = 0;
@@ -88,14 +93,21 @@ struct options {
   /// angle between their planes exceeds this (degrees); at 0, only edges
   /// between polygons in one plane are left out.
   double crease = 0;
-  std::optional<vec3> light; ///< direction towards the light; none: a head light at the eye
+  std::optional<vec3> light; ///< direction towards a light at infinity (the sun)
+  std::vector<vec3> lights;  ///< point lights; with neither, a head light at the eye
   vec3 eye{0, 0, 0};         ///< the observer (for the head light)
   rgb background{1, 1, 1};
+  /// A map built from shadow pieces (`svm::label_regions`): its labels are
+  /// indices here, each an input face and the lights that reach it.  Lit
+  /// parts are shaded by the lights that reach them, the rest by the ambient
+  /// term alone; in style `lines`, shadow boundaries are drawn thin.
+  std::vector<lit_region> const* regions = nullptr;
 };
 
-/// The id style's colour of polygon `p`: p + 1 as 24-bit RGB.
-inline rgb id_colour(std::int64_t p) {
-  auto v = static_cast<std::uint32_t>(p + 1);
+/// The id style's colour of polygon `p`: p + 1 as 24-bit RGB, plus 0x800000
+/// when `shadowed`.
+inline rgb id_colour(std::int64_t p, bool shadowed = false) {
+  auto v = static_cast<std::uint32_t>(p + 1) + (shadowed ? 0x800000u : 0u);
   return {((v >> 16) & 255) / 255.0, ((v >> 8) & 255) / 255.0, (v & 255) / 255.0};
 }
 
@@ -246,13 +258,38 @@ drawing draw(visibility_map<FT> const& vm, projector const& pr, std::vector<face
   auto info = [&](std::int64_t p) -> face_info const* {
     return p >= 0 && static_cast<std::size_t>(p) < faces.size() ? &faces[static_cast<std::size_t>(p)] : nullptr;
   };
-  auto colour = [&](std::int64_t p) {
-    if (o.style == style::id) return id_colour(p);
+  // A map label: the input face, and the lights that reach it (all, without shadows).
+  auto face_of = [&](std::int64_t label) -> std::int64_t {
+    if (!o.regions || label < 0) return label;
+    return (*o.regions)[static_cast<std::size_t>(label)].face;
+  };
+  auto lights_of = [&](std::int64_t label) -> std::uint64_t {
+    if (!o.regions || label < 0) return ~std::uint64_t{0};
+    return (*o.regions)[static_cast<std::size_t>(label)].lights;
+  };
+  auto colour = [&](std::int64_t label) {
+    std::int64_t p = face_of(label);
+    if (o.style == style::id) return id_colour(p, o.regions && lights_of(label) == 0);
     auto const* fi = info(p);
     rgb c = fi && fi->colour ? *fi->colour : palette(p);
     if (o.style == style::flat || !fi || norm3(fi->normal) == 0) return c;
-    vec3 l = o.light ? unit3(*o.light) : unit3(svm::detail::sub3(o.eye, fi->centre));
-    return shade(c, 0.2 + 0.8 * std::abs(dot3(l, fi->normal)));
+    if (o.lights.empty()) {
+      vec3 l = o.light ? unit3(*o.light) : unit3(svm::detail::sub3(o.eye, fi->centre));
+      return shade(c, 0.2 + 0.8 * std::abs(dot3(l, fi->normal)));
+    }
+    // Point lights: without shadows each lights the side it faces; with
+    // shadows, a light lights the front where it reaches, which the eye sees
+    // only from the front.
+    double sum = 0;
+    bool eye_in_front = dot3(fi->normal, o.eye) > fi->offset;
+    std::uint64_t reach = lights_of(label);
+    for (std::size_t k = 0; k < o.lights.size(); ++k) {
+      vec3 l = unit3(svm::detail::sub3(o.lights[k], fi->centre));
+      double d = dot3(l, fi->normal);
+      if (!o.regions) sum += std::abs(d);
+      else if (k < 64 && ((reach >> k) & 1u) && eye_in_front) sum += std::max(0.0, d);
+    }
+    return shade(c, 0.2 + 0.8 * std::min(1.0, sum));
   };
 
   if (o.style == style::lines) {
@@ -261,6 +298,8 @@ drawing draw(visibility_map<FT> const& vm, projector const& pr, std::vector<face
     double const cos_crease = std::cos(o.crease * std::numbers::pi / 180);
     auto drawn = [&](std::int64_t a, std::int64_t b) {
       if (a == b || a == clipped || b == clipped) return false;
+      a = face_of(a), b = face_of(b);
+      if (a == b) return false;
       if (a < 0 || b < 0) return true;
       auto const *fa = info(a), *fb = info(b);
       if (!fa || !fb || norm3(fa->normal) == 0 || norm3(fb->normal) == 0) return true;
@@ -274,10 +313,13 @@ drawing draw(visibility_map<FT> const& vm, projector const& pr, std::vector<face
       std::vector<pixel> pts;
       vec3 circle; ///< unit normal of the edge's great circle
     };
-    std::vector<piece> pieces;
+    std::vector<piece> solid, thin;
     auto const& he = m.half_edges();
     for (index e = 0; e < he.size(); e += 2) {
-      if (!drawn(m.faces()[he[e].face].label, m.faces()[he[e + 1].face].label)) continue;
+      std::int64_t a = m.faces()[he[e].face].label, b = m.faces()[he[e + 1].face].label;
+      // A shadow boundary: one face on both sides, lit by different lights.
+      bool shadow_edge = o.regions && a >= 0 && b >= 0 && a != b && face_of(a) == face_of(b);
+      if (!shadow_edge && !drawn(a, b)) continue;
       vec3 p = vertex[m.origin(e)], q = vertex[m.target(e)];
       std::vector<pixel> pts;
       if (pr.kind() == projection::perspective) pts = {pr.project(p), pr.project(q)};
@@ -295,86 +337,92 @@ drawing draw(visibility_map<FT> const& vm, projector const& pr, std::vector<face
           subdivide(pr, p, q, side, o.tolerance, pts);
         }
       }
-      pieces.push_back({m.origin(e), m.target(e), std::move(pts), unit_circle(m, e)});
+      (shadow_edge ? thin : solid).push_back({m.origin(e), m.target(e), std::move(pts), unit_circle(m, e)});
     }
-    // Pieces of one great circle joined end to end are one edge.
-    std::size_t straight_joins = 0;
-    // Join pieces into polylines at vertices where exactly two meet (and the
-    // images agree: not across the panorama's seam); then order them greedily
-    // to shorten pen travel.
-    std::map<index, std::vector<std::size_t>> at;
-    for (std::size_t i = 0; i < pieces.size(); ++i) at[pieces[i].from].push_back(i), at[pieces[i].to].push_back(i);
-    std::vector<char> used(pieces.size(), 0);
-    auto close_to = [](pixel a, pixel b) { return std::hypot(a.x - b.x, a.y - b.y) < 1e-6; };
-    auto same_circle = [&](std::size_t a, std::size_t b) { return norm3(cross3(pieces[a].circle, pieces[b].circle)) < 1e-12; };
-    // Extends `line`, whose last piece is `last`, from vertex `end`; returns the last piece and vertex.
-    auto extend = [&](std::vector<pixel>& line, std::size_t last, index end) -> std::pair<std::size_t, index> {
-      while (true) {
-        auto const& list = at[end];
-        if (list.size() != 2) return {last, end};
-        std::size_t next = used[list[0]] ? list[1] : list[0];
-        if (used[next]) return {last, end};
-        auto const& pc = pieces[next];
-        bool fwd = pc.from == end;
-        pixel start = fwd ? pc.pts.front() : pc.pts.back();
-        if (!close_to(start, line.back())) return {last, end};
-        used[next] = 1;
-        if (same_circle(next, last)) {
-          ++straight_joins;
-          // A perspective image is straight there: the joint is no corner.
-          if (pr.kind() == projection::perspective && line.size() >= 2) line.pop_back();
-        }
-        last = next;
-        if (fwd) line.insert(line.end(), pc.pts.begin() + 1, pc.pts.end());
-        else line.insert(line.end(), pc.pts.rbegin() + 1, pc.pts.rend());
-        end = fwd ? pc.to : pc.from;
-      }
-    };
-    std::vector<std::vector<pixel>> lines;
-    auto run = [&](std::size_t i) {
-      used[i] = 1;
-      auto const& pc = pieces[i];
-      std::vector<pixel> line = pc.pts;
-      auto [tail, end] = extend(line, i, pc.to);
-      if (end == pc.from && tail != i && close_to(line.front(), line.back())) {
-        // A closed loop: its start is a joint too.
-        if (same_circle(tail, i)) {
-          ++straight_joins;
-          if (pr.kind() == projection::perspective && line.size() >= 3) {
-            line.erase(line.begin());
-            line.back() = line.front();
+    // Joins pieces into polylines ordered for the pen; returns the number of
+    // edges (pieces of one great circle joined end to end count once).
+    auto assemble = [&](std::vector<piece> const& pieces, std::vector<std::vector<pixel>>& result) {
+      // Pieces of one great circle joined end to end are one edge.
+      std::size_t straight_joins = 0;
+      // Join pieces into polylines at vertices where exactly two meet (and the
+      // images agree: not across the panorama's seam); then order them greedily
+      // to shorten pen travel.
+      std::map<index, std::vector<std::size_t>> at;
+      for (std::size_t i = 0; i < pieces.size(); ++i) at[pieces[i].from].push_back(i), at[pieces[i].to].push_back(i);
+      std::vector<char> used(pieces.size(), 0);
+      auto close_to = [](pixel a, pixel b) { return std::hypot(a.x - b.x, a.y - b.y) < 1e-6; };
+      auto same_circle = [&](std::size_t a, std::size_t b) { return norm3(cross3(pieces[a].circle, pieces[b].circle)) < 1e-12; };
+      // Extends `line`, whose last piece is `last`, from vertex `end`; returns the last piece and vertex.
+      auto extend = [&](std::vector<pixel>& line, std::size_t last, index end) -> std::pair<std::size_t, index> {
+        while (true) {
+          auto const& list = at[end];
+          if (list.size() != 2) return {last, end};
+          std::size_t next = used[list[0]] ? list[1] : list[0];
+          if (used[next]) return {last, end};
+          auto const& pc = pieces[next];
+          bool fwd = pc.from == end;
+          pixel start = fwd ? pc.pts.front() : pc.pts.back();
+          if (!close_to(start, line.back())) return {last, end};
+          used[next] = 1;
+          if (same_circle(next, last)) {
+            ++straight_joins;
+            // A perspective image is straight there: the joint is no corner.
+            if (pr.kind() == projection::perspective && line.size() >= 2) line.pop_back();
           }
+          last = next;
+          if (fwd) line.insert(line.end(), pc.pts.begin() + 1, pc.pts.end());
+          else line.insert(line.end(), pc.pts.rbegin() + 1, pc.pts.rend());
+          end = fwd ? pc.to : pc.from;
         }
+      };
+      std::vector<std::vector<pixel>> lines;
+      auto run = [&](std::size_t i) {
+        used[i] = 1;
+        auto const& pc = pieces[i];
+        std::vector<pixel> line = pc.pts;
+        auto [tail, end] = extend(line, i, pc.to);
+        if (end == pc.from && tail != i && close_to(line.front(), line.back())) {
+          // A closed loop: its start is a joint too.
+          if (same_circle(tail, i)) {
+            ++straight_joins;
+            if (pr.kind() == projection::perspective && line.size() >= 3) {
+              line.erase(line.begin());
+              line.back() = line.front();
+            }
+          }
+          lines.push_back(std::move(line));
+          return;
+        }
+        std::reverse(line.begin(), line.end());
+        extend(line, i, pc.from);
         lines.push_back(std::move(line));
-        return;
+      };
+      for (std::size_t i = 0; i < pieces.size(); ++i)
+        if (!used[i] && (at[pieces[i].from].size() != 2 || at[pieces[i].to].size() != 2)) run(i);
+      for (std::size_t i = 0; i < pieces.size(); ++i)
+        if (!used[i]) run(i);
+      std::vector<char> done(lines.size(), 0);
+      pixel pen{0, 0};
+      for (std::size_t n = 0; n < lines.size(); ++n) {
+        std::size_t best = 0;
+        bool reverse = false;
+        double bd = HUGE_VAL;
+        for (std::size_t i = 0; i < lines.size(); ++i) {
+          if (done[i]) continue;
+          double a = std::hypot(lines[i].front().x - pen.x, lines[i].front().y - pen.y);
+          double b = std::hypot(lines[i].back().x - pen.x, lines[i].back().y - pen.y);
+          if (a < bd) bd = a, best = i, reverse = false;
+          if (b < bd) bd = b, best = i, reverse = true;
+        }
+        done[best] = 1;
+        if (reverse) std::reverse(lines[best].begin(), lines[best].end());
+        pen = lines[best].back();
+        result.push_back(std::move(lines[best]));
       }
-      std::reverse(line.begin(), line.end());
-      extend(line, i, pc.from);
-      lines.push_back(std::move(line));
+      return pieces.size() - straight_joins;
     };
-    for (std::size_t i = 0; i < pieces.size(); ++i)
-      if (!used[i] && (at[pieces[i].from].size() != 2 || at[pieces[i].to].size() != 2)) run(i);
-    for (std::size_t i = 0; i < pieces.size(); ++i)
-      if (!used[i]) run(i);
-    out.edges = pieces.size() - straight_joins;
-    std::vector<char> done(lines.size(), 0);
-    pixel pen{0, 0};
-    for (std::size_t n = 0; n < lines.size(); ++n) {
-      std::size_t best = 0;
-      bool reverse = false;
-      double bd = HUGE_VAL;
-      for (std::size_t i = 0; i < lines.size(); ++i) {
-        if (done[i]) continue;
-        double a = std::hypot(lines[i].front().x - pen.x, lines[i].front().y - pen.y);
-        double b = std::hypot(lines[i].back().x - pen.x, lines[i].back().y - pen.y);
-        if (a < bd) bd = a, best = i, reverse = false;
-        if (b < bd) bd = b, best = i, reverse = true;
-      }
-      done[best] = 1;
-      if (reverse) std::reverse(lines[best].begin(), lines[best].end());
-      pen = lines[best].back();
-      out.polylines.push_back(std::move(lines[best]));
-    }
+    out.edges = assemble(solid, out.polylines);
+    assemble(thin, out.thin_polylines);
     return out;
   }
 
@@ -383,7 +431,8 @@ drawing draw(visibility_map<FT> const& vm, projector const& pr, std::vector<face
     std::int64_t label = m.faces()[f].label;
     if (label < 0) continue;
     region rg;
-    rg.polygon = label;
+    rg.polygon = face_of(label);
+    rg.lights = lights_of(label);
     rg.fill = colour(label);
     if (cycles[f].empty()) {
       // The whole sphere: the whole image.

@@ -78,18 +78,26 @@ inline std::string to_svg(drawing const& d, int digits = 2) {
     out += "<rect width=\"" + std::to_string(d.width) + "\" height=\"" + std::to_string(d.height) + "\" fill=\"" +
            detail::hex(*d.background) + "\"/>\n";
   if (d.style == style::lines) {
-    out += "<g fill=\"none\" stroke=\"#000\" stroke-width=\"1\" stroke-linejoin=\"round\" stroke-linecap=\"round\">\n";
-    for (auto const& line : d.polylines) {
-      out += "<path d=\"";
-      for (std::size_t i = 0; i < line.size(); ++i) {
-        out += i == 0 ? "M" : " L";
-        detail::append_number(out, line[i].x, digits);
-        out += ',';
-        detail::append_number(out, line[i].y, digits);
+    // Visible edges, then shadow boundaries (thin), each a group.
+    auto group = [&](std::vector<std::vector<pixel>> const& lines, char const* width, char const* id) {
+      if (lines.empty()) return;
+      out += std::string("<g id=\"") + id + "\" fill=\"none\" stroke=\"#000\" stroke-width=\"" + width +
+             "\" stroke-linejoin=\"round\" stroke-linecap=\"round\">\n";
+      for (auto const& line : lines) {
+        out += "<path d=\"";
+        for (std::size_t i = 0; i < line.size(); ++i) {
+          out += i == 0 ? "M" : " L";
+          detail::append_number(out, line[i].x, digits);
+          out += ',';
+          detail::append_number(out, line[i].y, digits);
+        }
+        out += "\"/>\n";
       }
-      out += "\"/>\n";
-    }
-    out += "</g>\n</svg>\n";
+      out += "</g>\n";
+    };
+    group(d.polylines, "1", "edges");
+    group(d.thin_polylines, "0.35", "shadow-boundaries");
+    out += "</svg>\n";
     return out;
   }
   // Flat and shaded regions get a hairline of their own colour, so that
