@@ -124,6 +124,21 @@ public:
     return hidden;
   }
 
+  /// Inserts `piece` as `insert` does, and reports it cut into as few parts
+  /// as the tree allows: `part(p, visible)` for each maximal part of `piece`
+  /// that is wholly visible or wholly hidden, where the tree split it at a
+  /// node whose parts all turned out alike it is reported unsplit there.
+  /// (The parts that `visit` and `hide` see are the tree's cells, many more
+  /// where the tree is fine.)  Recursive, to the depth of the tree.  Returns
+  /// the number of hidden cells.
+  template <class Piece, class Route, class Visit, class Part>
+  std::size_t insert_merged(Piece piece, Route&& route, Visit&& visit, Part&& part) {
+    std::size_t hidden = 0;
+    auto r = merged(root(), place{}, std::move(piece), route, visit, part, hidden);
+    if (r.state != 0) part(std::move(*r.piece), r.state > 0);
+    return hidden;
+  }
+
   /// Calls `f(leaf, place)` for every leaf reachable from the root.
   template <class F> void for_each_leaf(F&& f) const {
     std::vector<std::pair<node_id, place>> stack{{root(), place{}}};
@@ -185,6 +200,37 @@ public:
   tree_type release() && { return std::move(tree_); }
 
 private:
+  /// What `merged` leaves to its caller: a part wholly visible (+1) or
+  /// wholly hidden (−1), not yet reported, or 0 when its parts are.
+  template <class Piece> struct pending {
+    int state = 0;
+    std::optional<Piece> piece;
+  };
+
+  template <class Piece, class Route, class Visit, class Part>
+  pending<Piece> merged(node_id n, place at, Piece p, Route& route, Visit& visit, Part& part, std::size_t& hidden) {
+    if (tree_.is_leaf(n)) {
+      if (is_covered(n)) {
+        ++hidden;
+        return {-1, std::move(p)};
+      }
+      Piece kept = p;
+      visit(std::move(p), n, at);
+      return {+1, std::move(kept)};
+    }
+    routed<Piece> r = route(p, n);
+    if (r.side != 0) return merged(tree_.child(n, r.side), {n, r.side}, std::move(p), route, visit, part, hidden);
+    pending<Piece> pos, neg;
+    if (r.positive) pos = merged(tree_.positive(n), {n, +1}, std::move(*r.positive), route, visit, part, hidden);
+    if (r.negative) neg = merged(tree_.negative(n), {n, -1}, std::move(*r.negative), route, visit, part, hidden);
+    // Alike on both sides (or one side empty): the piece whole.
+    bool alike = (r.positive ? pos.state : neg.state) != 0 && (!r.positive || !r.negative || pos.state == neg.state);
+    if (alike) return {r.positive ? pos.state : neg.state, std::move(p)};
+    for (auto* q : {&pos, &neg})
+      if (q->state != 0) part(std::move(*q->piece), q->state > 0);
+    return {};
+  }
+
   /// Copies the shape of `from` into the empty tree `to`, leaf labels from `label(leaf)`.
   template <class From, class To, class Label> static void copy(From const& from, To& to, Label&& label) {
     std::vector<std::pair<node_id, place>> stack{{from.root(), place{}}};

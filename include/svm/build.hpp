@@ -336,24 +336,22 @@ public:
   /// covered space.  Pieces' circles are `frag`'s and the tree's, which last
   /// until the next `rebuild_if_grown`.  Returns the number of hidden parts.
   template <class Visible, class Hidden> std::size_t insert(fragment frag, Visible&& visible, Hidden&& hidden) {
-    using place = typename coverage<FT>::place;
-    auto visit = [&](fragment&& piece, bsp::node_id leaf, place at) {
-      std::size_t k = piece.size();
-      for (std::size_t i = 0; i < k; ++i) {
-        auto const& b = piece[i];
-        // An edge not lying in a circle of the path, of positive length:
-        // its circle cuts the cell (`proper_edge`).
-        if (!b.flag || !proper_edge(piece, i)) continue;
-        bsp::node_id node = cover_.split(at, *b.c, index{0}, index{0});
-        circles_.keep(node, *b.c);
-        at = {node, +1};
-        leaf = cover_.as_tree().positive(node);
-      }
-      cover_.cover(at, leaf);
+    auto visit = [&](fragment&& piece, bsp::node_id leaf, typename coverage<FT>::place at) {
+      cover_cell(piece, leaf, at);
       visible(std::move(piece));
     };
     return cover_.insert(std::move(frag), [&](fragment& p, bsp::node_id n) { return route(p, circles_.of[n.index()], signs_); },
                          visit, hidden);
+  }
+
+  /// Inserts `frag` as `insert` does, and calls `part(piece, visible)` for
+  /// each maximal part of it that the tree's cells leave wholly visible or
+  /// wholly hidden (`bsp::coverage_tree::insert_merged`).  Returns the number
+  /// of hidden cells.
+  template <class Part> std::size_t insert_merged(fragment frag, Part&& part) {
+    return cover_.insert_merged(
+        std::move(frag), [&](fragment& p, bsp::node_id n) { return route(p, circles_.of[n.index()], signs_); },
+        [&](fragment&& piece, bsp::node_id leaf, typename coverage<FT>::place at) { cover_cell(std::move(piece), leaf, at); }, part);
   }
 
   /// Rebuilds the tree when it has grown past its limit; whether it did.
@@ -373,6 +371,21 @@ public:
   std::size_t rebuilds() const noexcept { return rebuilds_; }
 
 private:
+  /// The visible `piece` in the free leaf `leaf` hanging at `at`: its
+  /// flagged edges of positive length (not lying in a circle of the path:
+  /// `proper_edge`) cut the cell, and the cell inside is covered.
+  void cover_cell(fragment const& piece, bsp::node_id leaf, typename coverage<FT>::place at) {
+    for (std::size_t i = 0; i < piece.size(); ++i) {
+      auto const& b = piece[i];
+      if (!b.flag || !proper_edge(piece, i)) continue;
+      bsp::node_id node = cover_.split(at, *b.c, index{0}, index{0});
+      circles_.keep(node, *b.c);
+      at = {node, +1};
+      leaf = cover_.as_tree().positive(node);
+    }
+    cover_.cover(at, leaf);
+  }
+
   static constexpr std::size_t least_rebuild = 256;
   coverage<FT> cover_{index{0}, true};
   node_circles<FT> circles_;

@@ -33,6 +33,12 @@ template <geometry::number FT> struct shadow_piece {
 
 struct shadow_options {
   std::uint64_t seed = 1; ///< splitter choice of the depth-order trees
+  /// With one light, whether the pieces in shadow are made too.  Without
+  /// them a polygon's pieces cover only its lit part, and `shadows::dark`
+  /// says which polygons have a part in shadow: all that `label_regions`
+  /// (and so the eye's map) needs, and most of the work saved where shadows
+  /// are intricate.  Several lights always make them (the overlay needs them).
+  bool shadowed_pieces = true;
   /// Called with the fraction of the work done (0 to 1), per light, when set.
   std::function<void(double)> progress{};
 };
@@ -48,9 +54,12 @@ struct shadow_statistics {
   double seconds = 0;
 };
 
-/// Every input polygon split into pieces by the lights that reach them.
+/// Every input polygon split into pieces by the lights that reach them,
+/// polygon by polygon.
 template <geometry::number FT> struct shadows {
   std::vector<shadow_piece<FT>> pieces;
+  /// By polygon: whether some part of it is reached by no light.
+  std::vector<char> dark;
   shadow_statistics stats;
 };
 
@@ -94,7 +103,7 @@ template <geometry::number FT> using light_split = std::vector<std::vector<std::
 /// in shadow whole.
 template <geometry::number FT>
 light_split<FT> light_pass(std::vector<geometry::e3::sub_hyperplane<FT>> const& shapes, geometry::e3::point<FT> const& light,
-                           shadow_options const& options, shadow_statistics& st) {
+                           shadow_options const& options, bool make_dark, std::vector<char>& dark, shadow_statistics& st) {
   using namespace geometry;
   using K3 = e3::kernel<FT>;
   using fragment = std::vector<sphere_bound<FT>>;
@@ -105,7 +114,8 @@ light_split<FT> light_pass(std::vector<geometry::e3::sub_hyperplane<FT>> const& 
   for (std::uint32_t i = 0; i < n; ++i) {
     auto side = e3::side(shapes[i].support, light);
     if (side == oriented_side::on) {
-      out[i].push_back({shapes[i], false});
+      if (make_dark) out[i].push_back({shapes[i], false});
+      dark[i] = 1;
       continue;
     }
     front[i] = side == oriented_side::positive;
@@ -117,7 +127,7 @@ light_split<FT> light_pass(std::vector<geometry::e3::sub_hyperplane<FT>> const& 
   coverage_pass<FT> pass(bo);
   circle_store<FT> scratch;
   std::vector<std::uint32_t> fragments_of(n, 0), lit_whole(n, 0), dark_whole(n, 0);
-  std::vector<fragment> lit, dark;
+  std::vector<fragment> lit, unlit;
   // The fragment cut by the lifted circles of a part other than its own.
   auto lifted = [&](e3::sub_hyperplane<FT> const& whole, fragment const& own, fragment const& part) {
     std::optional<e3::sub_hyperplane<FT>> s = whole;
@@ -132,33 +142,37 @@ light_split<FT> light_pass(std::vector<geometry::e3::sub_hyperplane<FT>> const& 
     ++st.fragments;
     scratch.clear();
     lit.clear();
-    dark.clear();
+    unlit.clear();
     fragment projected = project(fr.piece, light, scratch);
     bool const lights = front[fr.id] != 0;
-    std::size_t seen = 0;
-    std::size_t hidden = pass.insert(
-        projected,
-        [&](fragment&& p) {
-          ++seen;
-          if (lights) lit.push_back(std::move(p));
-        },
-        [&](fragment&& p) {
-          if (lights) dark.push_back(std::move(p));
-        });
+    std::size_t seen = 0, parts = 0;
+    // In maximal parts wholly lit or wholly in shadow (not the tree's cells).
+    pass.insert_merged(projected, [&](fragment&& p, bool visible) {
+      ++parts;
+      seen += visible ? 1 : 0;
+      if (lights) (visible ? lit : unlit).push_back(std::move(p));
+    });
+    std::size_t hidden = parts - seen;
     ++fragments_of[fr.id];
+    if (!lights || hidden > 0) dark[fr.id] = 1;
     if (!lights || hidden == 0 || seen == 0) {
       bool is_lit = lights && hidden == 0;
       ++(is_lit ? lit_whole : dark_whole)[fr.id];
-      out[fr.id].push_back({fr.piece, is_lit});
+      if (is_lit || make_dark) out[fr.id].push_back({fr.piece, is_lit});
       ++(is_lit ? st.lit_parts : st.shadowed_parts);
     } else {
-      for (auto const* group : {&lit, &dark})
+      for (auto const* group : {&lit, &unlit}) {
+        bool is_lit = group == &lit;
+        if (!is_lit && !make_dark) {
+          st.shadowed_parts += unlit.size();
+          continue;
+        }
         for (auto const& p : *group)
           if (auto s = lifted(fr.piece, projected, p)) {
-            bool is_lit = group == &lit;
             out[fr.id].push_back({std::move(*s), is_lit});
             ++(is_lit ? st.lit_parts : st.shadowed_parts);
           }
+      }
     }
     pass.rebuild_if_grown();
   });
@@ -166,7 +180,8 @@ light_split<FT> light_pass(std::vector<geometry::e3::sub_hyperplane<FT>> const& 
   for (std::uint32_t i = 0; i < n; ++i)
     if (fragments_of[i] >= 2 && (lit_whole[i] == fragments_of[i] || dark_whole[i] == fragments_of[i])) {
       bool is_lit = lit_whole[i] == fragments_of[i];
-      out[i].assign(1, {shapes[i], is_lit});
+      out[i].clear();
+      if (is_lit || make_dark) out[i].push_back({shapes[i], is_lit});
     }
   return out;
 }
@@ -198,9 +213,24 @@ shadows<FT> compute_shadows(std::vector<polygon<FT>> const& polygons, std::vecto
   // Per polygon, its pieces so far and the lights that reach each.
   std::vector<std::vector<std::pair<e3::sub_hyperplane<FT>, std::uint64_t>>> current(polygons.size());
   for (std::size_t i = 0; i < shapes.size(); ++i) current[i].push_back({shapes[i], 0});
+  bool const make_dark = options.shadowed_pieces || lights.size() != 1;
+  out.dark.assign(polygons.size(), lights.empty() ? 1 : 0);
+  if (!make_dark) {
+    // One light, lit pieces only.
+    if (options.progress) options.progress(0.0);
+    auto split = detail::light_pass(shapes, lights[0], options, false, out.dark, st);
+    for (std::uint32_t i = 0; i < split.size(); ++i)
+      for (auto& [s, lit] : split[i]) out.pieces.push_back({std::move(s), i, 1});
+    st.pieces = out.pieces.size();
+    if (options.progress) options.progress(1.0);
+    st.filter_fallbacks = filter_stats().fallbacks - fallbacks0;
+    st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return out;
+  }
+  std::vector<char> ignored(polygons.size(), 0);
   for (std::size_t k = 0; k < lights.size(); ++k) {
     if (options.progress) options.progress(static_cast<double>(k) / static_cast<double>(lights.size()));
-    auto split = detail::light_pass(shapes, lights[k], options, st);
+    auto split = detail::light_pass(shapes, lights[k], options, true, ignored, st);
     std::uint64_t const bit = std::uint64_t{1} << k;
     for (std::size_t i = 0; i < shapes.size(); ++i) {
       auto& cur = current[i];
@@ -224,7 +254,10 @@ shadows<FT> compute_shadows(std::vector<polygon<FT>> const& polygons, std::vecto
     }
   }
   for (std::uint32_t i = 0; i < current.size(); ++i)
-    for (auto& [s, mask] : current[i]) out.pieces.push_back({std::move(s), i, mask});
+    for (auto& [s, mask] : current[i]) {
+      if (mask == 0) out.dark[i] = 1;
+      out.pieces.push_back({std::move(s), i, mask});
+    }
   st.pieces = out.pieces.size();
   if (options.progress) options.progress(1.0);
   st.filter_fallbacks = filter_stats().fallbacks - fallbacks0;
@@ -247,15 +280,32 @@ template <geometry::number FT> struct shadowed_scene {
   std::vector<lit_region> regions; ///< by label
 };
 
+/// The shadowed scene for the eye's map.  Each polygon goes in as the
+/// pieces that some light reaches and then, when some part of it is in
+/// shadow, itself whole, labelled as reached by no light: coplanar and
+/// later in the input, it is behind its own lit pieces (the depth order's
+/// tie), so the map shows it where they are not.  That is far fewer inputs
+/// than every shadowed piece: the shadow of a polygon needs no convex
+/// pieces of its own.
 template <geometry::number FT> shadowed_scene<FT> label_regions(shadows<FT> const& sh, std::vector<polygon<FT>> const& polygons) {
   shadowed_scene<FT> out;
   std::map<std::pair<std::uint32_t, std::uint64_t>, std::int64_t> ids;
-  out.pieces.reserve(sh.pieces.size());
-  for (auto const& p : sh.pieces) {
-    std::uint32_t face = polygons[p.polygon].face;
-    auto [it, added] = ids.try_emplace({face, p.lights}, static_cast<std::int64_t>(out.regions.size()));
-    if (added) out.regions.push_back({face, p.lights});
-    out.pieces.push_back({p.shape, it->second});
+  auto label = [&](std::uint32_t face, std::uint64_t lights) {
+    auto [it, added] = ids.try_emplace({face, lights}, static_cast<std::int64_t>(out.regions.size()));
+    if (added) out.regions.push_back({face, lights});
+    return it->second;
+  };
+  // The pieces come polygon by polygon (`compute_shadows`).
+  std::size_t at = 0;
+  for (std::uint32_t i = 0; i < polygons.size(); ++i) {
+    std::uint32_t face = polygons[i].face;
+    for (; at < sh.pieces.size() && sh.pieces[at].polygon == i; ++at)
+      if (sh.pieces[at].lights != 0) out.pieces.push_back({sh.pieces[at].shape, label(face, sh.pieces[at].lights)});
+    if (sh.dark[i]) {
+      auto whole = geometry::e3::convex_polygon<FT>(polygons[i].vertices, face);
+      for (auto& b : whole.bounds) b.original.tag = detail::edge_tag_bit | face;
+      out.pieces.push_back({std::move(whole), label(face, 0)});
+    }
   }
   return out;
 }

@@ -250,13 +250,57 @@ TEST_CASE("shadows: regions join pieces of one face that the same lights reach",
   auto s = svm::scenes::bricks(4);
   auto sh = svm::compute_shadows<Q>(s.polygons, {P(Q(1), Q(2), Q(-4)), P(Q(-3), Q(1), Q(-2))});
   auto labelled = svm::label_regions(sh, s.polygons);
-  REQUIRE(labelled.pieces.size() == sh.pieces.size());
-  for (std::size_t i = 0; i < sh.pieces.size(); ++i) {
-    auto const& r = labelled.regions.at(static_cast<std::size_t>(labelled.pieces[i].label));
-    CHECK(r.face == s.polygons[sh.pieces[i].polygon].face);
-    CHECK(r.lights == sh.pieces[i].lights);
+  // The lit pieces as they are, and each polygon with a shadowed piece whole
+  // after them, labelled as reached by no light.
+  std::size_t k = 0, dark = 0;
+  for (std::size_t i = 0; i < s.polygons.size(); ++i) {
+    bool shadowed = false;
+    for (auto const& p : sh.pieces) {
+      if (p.polygon != i) continue;
+      shadowed = shadowed || p.lights == 0;
+      if (p.lights == 0) continue;
+      REQUIRE(k < labelled.pieces.size());
+      auto const& r = labelled.regions.at(static_cast<std::size_t>(labelled.pieces[k].label));
+      CHECK(r.face == s.polygons[i].face);
+      CHECK(r.lights == p.lights);
+      CHECK(*e3::projected_area(labelled.pieces[k].shape, 2) == *e3::projected_area(p.shape, 2));
+      ++k;
+    }
+    if (shadowed) {
+      REQUIRE(k < labelled.pieces.size());
+      auto const& r = labelled.regions.at(static_cast<std::size_t>(labelled.pieces[k].label));
+      CHECK(r.face == s.polygons[i].face);
+      CHECK(r.lights == 0);
+      CHECK(*e3::projected_area(labelled.pieces[k].shape, 2) == *e3::projected_area(e3::convex_polygon<Q>(s.polygons[i].vertices), 2));
+      ++k, ++dark;
+    }
   }
+  CHECK(k == labelled.pieces.size());
+  CHECK(dark > 0);
+  CHECK(dark < s.polygons.size());
   for (std::size_t a = 0; a < labelled.regions.size(); ++a)
     for (std::size_t b = a + 1; b < labelled.regions.size(); ++b) CHECK_FALSE(labelled.regions[a] == labelled.regions[b]);
   CHECK_THROWS_AS(svm::compute_shadows<Q>(s.polygons, std::vector<P>(65, P(Q(0), Q(0), Q(-5)))), std::invalid_argument);
+}
+
+TEST_CASE("shadows: with one light, the lit pieces alone, and which polygons have a shadow", "[shadow]") {
+  for (auto const& s : {svm::scenes::bricks(6), svm::scenes::platforms(5), svm::scenes::random_cubes(10, 4)}) {
+    std::vector<P> light{P(s.eye.x() + Q(3), s.eye.y() - Q(2), s.eye.z() + Q(1, 3))};
+    auto all = svm::compute_shadows<Q>(s.polygons, light);
+    auto lit = svm::compute_shadows<Q>(s.polygons, light, {.shadowed_pieces = false});
+    std::vector<Q> lit_area(s.polygons.size(), Q(0)), lit_area2(s.polygons.size(), Q(0));
+    std::vector<char> dark(s.polygons.size(), 0);
+    for (auto const& p : all.pieces) {
+      if (p.lights == 0) dark[p.polygon] = 1;
+      else lit_area[p.polygon] += *e3::projected_area(p.shape, p.shape.axis);
+    }
+    for (auto const& p : lit.pieces) {
+      CHECK(p.lights == 1);
+      lit_area2[p.polygon] += *e3::projected_area(p.shape, p.shape.axis);
+    }
+    CHECK(lit_area == lit_area2);
+    CHECK(lit.dark == dark);
+    CHECK(all.dark == dark);
+    CHECK(lit.pieces.size() < all.pieces.size());
+  }
 }

@@ -109,7 +109,7 @@ svm::visibility_map<FT> map_of(std::vector<svm::polygon<FT>> const& polygons, ge
     else
       lights.emplace_back(p.x().template convert_to<double>(), p.y().template convert_to<double>(), p.z().template convert_to<double>());
   }
-  auto sh = svm::compute_shadows<FT>(polygons, lights, {.seed = o.seed});
+  auto sh = svm::compute_shadows<FT>(polygons, lights, {.seed = o.seed, .shadowed_pieces = false});
   if (shadows.stats) *shadows.stats = sh.stats;
   auto scene = svm::label_regions(sh, polygons);
   if (shadows.regions) *shadows.regions = std::move(scene.regions);
@@ -330,29 +330,34 @@ std::string shadow_output(map_job const& job, std::vector<std::string> const& li
   svm::shadow_options so;
   if (job.progress)
     so.progress = [](double f) { std::fprintf(stderr, "genbsp: shadows %d%%\n", static_cast<int>(f * 100)); };
+  // Areas need only the lit pieces (the rest of each face is in shadow).
+  so.shadowed_pieces = ext != ".json";
   auto write = [&]<class FT>(std::vector<svm::polygon<FT>> const& polygons, std::vector<geometry::e3::point<FT>> const& ls) {
     auto sh = svm::compute_shadows<FT>(polygons, ls, so);
     auto d = [](FT const& x) {
       if constexpr (std::is_same_v<FT, double>) return x;
       else return x.template convert_to<double>();
     };
-    // Per piece: its vertices in doubles, its projected area and the axis.
+    // The area in space of a polygon given by its vertices (Newell).
+    auto area_of = [](std::vector<std::array<double, 3>> const& v) {
+      std::array<double, 3> n{0, 0, 0};
+      for (std::size_t i = 0; i < v.size(); ++i) {
+        auto const &a = v[i], &b = v[(i + 1) % v.size()];
+        n[0] += (a[1] - b[1]) * (a[2] + b[2]), n[1] += (a[2] - b[2]) * (a[0] + b[0]), n[2] += (a[0] - b[0]) * (a[1] + b[1]);
+      }
+      return std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) / 2;
+    };
+    // Per piece: its vertices in doubles and its area.
     struct shown {
       std::vector<std::array<double, 3>> v;
-      double area = 0; // in space
+      double area = 0;
     };
     std::vector<shown> pieces;
     for (auto const& p : sh.pieces) {
       shown s;
       if (auto vs = geometry::e3::vertices(p.shape))
         for (auto const& q : *vs) s.v.push_back({d(q.x()), d(q.y()), d(q.z())});
-      // The area in space: the vertices' cross products (Newell).
-      std::array<double, 3> n{0, 0, 0};
-      for (std::size_t i = 0; i < s.v.size(); ++i) {
-        auto const &a = s.v[i], &b = s.v[(i + 1) % s.v.size()];
-        n[0] += (a[1] - b[1]) * (a[2] + b[2]), n[1] += (a[2] - b[2]) * (a[0] + b[0]), n[2] += (a[0] - b[0]) * (a[1] + b[1]);
-      }
-      s.area = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) / 2;
+      s.area = area_of(s.v);
       pieces.push_back(std::move(s));
     }
     auto face_of = [&](std::size_t i) { return polygons[sh.pieces[i].polygon].face; };
@@ -402,14 +407,20 @@ std::string shadow_output(map_job const& job, std::vector<std::string> const& li
     std::vector<double> area(nf, 0), dark(nf, 0);
     std::vector<std::vector<double>> lit(nf, std::vector<double>(ls.size(), 0));
     std::vector<char> present(nf, 0);
+    for (auto const& p : polygons) {
+      std::vector<std::array<double, 3>> v;
+      for (auto const& q : p.vertices) v.push_back({d(q.x()), d(q.y()), d(q.z())});
+      present[p.face] = 1;
+      area[p.face] += area_of(v);
+      dark[p.face] += area_of(v);
+    }
     for (std::size_t i = 0; i < pieces.size(); ++i) {
       std::uint32_t f = face_of(i);
-      present[f] = 1;
-      area[f] += pieces[i].area;
-      if (sh.pieces[i].lights == 0) dark[f] += pieces[i].area;
+      if (sh.pieces[i].lights != 0) dark[f] -= pieces[i].area;
       for (std::size_t k = 0; k < ls.size(); ++k)
         if ((sh.pieces[i].lights >> k) & 1u) lit[f][k] += pieces[i].area;
     }
+    for (auto& x : dark) x = std::max(0.0, x);
     json faces = json::array();
     for (std::size_t f = 0; f < nf; ++f)
       if (present[f]) faces.push_back({{"face", f}, {"area", area[f]}, {"lit_area", lit[f]}, {"shadowed_area", dark[f]}});
@@ -457,6 +468,8 @@ int run(int argc, char** argv) {
   map_job sj;
   auto* stats = app.add_subcommand("stats", "sizes and times of a map, as one JSON object");
   sj.add_options(*stats);
+  std::vector<std::string> stats_lights;
+  stats->add_option("--light", stats_lights, "the map of the scene's lit and shadowed pieces from these point lights (repeatable)");
 
   map_job rj;
   std::string render_out, look_text, dir_text, up_text, size_text, projection_name = "perspective",
@@ -542,7 +555,25 @@ int run(int argc, char** argv) {
     write_file(map_out, text);
   } else if (*stats) {
     auto l = load(sj);
-    std::cout << with_map(sj, l, [&](auto const& vm) { return stats_json(vm, l).dump(); }) << "\n";
+    shadow_job shadows;
+    svm::shadow_statistics sst;
+    std::vector<svm::lit_region> regions;
+    for (auto const& t : stats_lights) shadows.lights.push_back(parse_point(t, "--light"));
+    check_lights(shadows.lights, l);
+    shadows.stats = &sst;
+    shadows.regions = &regions;
+    std::cout << with_map(
+                     sj, l,
+                     [&](auto const& vm) {
+                       auto j = stats_json(vm, l);
+                       if (!shadows.lights.empty())
+                         j["shadows"] = {{"lights", sst.lights},           {"fragments", sst.fragments}, {"lit_parts", sst.lit_parts},
+                                         {"shadowed_parts", sst.shadowed_parts}, {"pieces", sst.pieces},       {"regions", regions.size()},
+                                         {"filter_fallbacks", sst.filter_fallbacks}, {"seconds", sst.seconds}};
+                       return j.dump();
+                     },
+                     {}, shadows)
+              << "\n";
   } else if (*locate) {
     auto l = load(lj);
     std::ifstream file;
