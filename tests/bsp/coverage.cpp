@@ -63,6 +63,42 @@ Q insert(cover_tree& t, cell const& c, std::size_t& hidden) {
   return visible;
 }
 
+/// Inserts `c` as `insert` does, through `insert_merged`: returns the area
+/// of the parts reported visible and of those reported hidden, and how many
+/// of each.
+struct merged_areas {
+  Q visible{0}, hidden{0};
+  std::size_t visible_parts = 0, hidden_parts = 0, cells = 0;
+};
+merged_areas insert_merged(cover_tree& t, cell const& c) {
+  merged_areas m;
+  auto route = [&](cell& piece, bsp::node_id n) -> bsp::routed<cell> {
+    auto r = K::split(piece, t.as_tree().splitter(n));
+    if (!r.negative) return {+1, std::nullopt, std::nullopt};
+    if (!r.positive) return {-1, std::nullopt, std::nullopt};
+    return {0, std::move(r.negative), std::move(r.positive)};
+  };
+  auto visit = [&](cell&& piece, bsp::node_id leaf, cover_tree::place at) {
+    ++m.cells;
+    cell here = t.as_tree().leaf_data(leaf);
+    for (auto const& b : piece.bounds) {
+      auto r = K::split(here, b);
+      if (!r.negative || !r.positive) continue;
+      bsp::node_id n = t.split(at, b, *r.negative, *r.positive);
+      at = {n, +1};
+      leaf = t.as_tree().positive(n);
+      here = *r.positive;
+    }
+    t.cover(at, leaf);
+  };
+  auto part = [&](cell&& p, bool visible) {
+    (visible ? m.visible : m.hidden) += *K::measure(p);
+    ++(visible ? m.visible_parts : m.hidden_parts);
+  };
+  m.cells += t.insert_merged(c, route, visit, part);
+  return m;
+}
+
 bool covered_at(cover_tree const& t, P const& p) {
   auto const& tr = t.as_tree();
   bsp::node_id n = tr.root();
@@ -213,4 +249,26 @@ TEST_CASE("build_partition reads a labelled grid back from the boundaries betwee
   auto empty = bsp::build_partition<K, std::uint32_t>({}, 7u);
   CHECK(empty.is_leaf(empty.root()));
   CHECK(empty.leaf_data(empty.root()) == 7u);
+}
+
+TEST_CASE("insert_merged reports a piece in maximal visible and hidden parts", "[bsp][coverage]") {
+  std::size_t fewer = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    INFO("trial " << trial);
+    auto rects = random_rects(static_cast<int>(test::uniform(2, 24)));
+    cover_tree a(e2::whole_plane<Q>()), b(e2::whole_plane<Q>());
+    std::size_t hidden = 0;
+    for (auto const& r : rects) {
+      Q visible = insert(a, polygon_of(r), hidden);
+      auto m = insert_merged(b, polygon_of(r));
+      // The same visible area as cell by cell, and the parts tile the piece.
+      CHECK(m.visible == visible);
+      CHECK(m.visible + m.hidden == *K::measure(polygon_of(r)));
+      CHECK(m.visible_parts + m.hidden_parts <= m.cells);
+      CHECK((m.visible_parts > 0) == (visible > 0));
+      fewer += m.visible_parts + m.hidden_parts < m.cells;
+    }
+    CHECK(b.interior_nodes() == a.interior_nodes());
+  }
+  CHECK(fewer > 0);
 }
