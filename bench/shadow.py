@@ -55,6 +55,28 @@ def median_seconds(cmd, runs, key):
     return statistics.median(times), last
 
 
+def plot(rows, path):
+    """Bars: the eye's map, the shadows and the eye's map of the pieces, per scene (log scale)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    names = [f"{r['family']}\nn = {r['n']}" for r in rows]
+    x = range(len(rows))
+    w = 0.27
+    fig, ax = plt.subplots(figsize=(11, 4.2))
+    ax.bar([i - w for i in x], [r["map_seconds"] for r in rows], w, label="eye's map of the scene")
+    ax.bar(list(x), [r["shadow_seconds"] for r in rows], w, label="shadows (one light)")
+    ax.bar([i + w for i in x], [r["lit_map_seconds"] for r in rows], w, label="eye's map of the lit pieces")
+    ax.set_yscale("log")
+    ax.set_ylabel("seconds (median)")
+    ax.set_xticks(list(x))
+    ax.set_xticklabels(names, fontsize=8)
+    ax.legend(fontsize=8)
+    ax.set_title("Exact shadows against the eye's map (genbsp shadow / genbsp stats, same run)")
+    fig.tight_layout()
+    fig.savefig(path)
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--genbsp", default=str(ROOT / "build/release/tools/genbsp"), help="the genbsp program")
@@ -63,10 +85,15 @@ def main():
                    help="comma-separated FAMILY:N")
     p.add_argument("--runs", type=int, default=3, help="runs of each; medians are reported (default 3)")
     p.add_argument("--json", help="write the measurements here")
+    p.add_argument("--plot", help="draw the measurements here (SVG; needs matplotlib)")
+    p.add_argument("--from-json", help="report (and plot) these measurements instead of measuring")
     a = p.parse_args()
     rows = []
+    if a.from_json:
+        rows = json.loads(pathlib.Path(a.from_json).read_text())["rows"]
+        a.scenes = ""
     with tempfile.TemporaryDirectory() as tmp:
-        for item in a.scenes.split(","):
+        for item in filter(None, a.scenes.split(",")):
             family, n = item.split(":")
             scene = pathlib.Path(tmp) / f"{family}-{n}.off"
             eye = subprocess.run([a.genbsp, "scene", family, "--n", n, "-o", str(scene)], check=True,
@@ -96,15 +123,17 @@ def main():
             rows.append(row)
             print(f"{family} n={n}: map {map_s:.3f} s, shadows {shadow_s:.3f} s ({row['ratio']:.2f}x), "
                   f"{row['pieces']} pieces", file=sys.stderr)
-    print("| Scene | Polygons | Eye's map | Shadows | Shadows / map | Pieces (lit + shadowed parts) "
+    print("| Scene | Polygons | Eye's map | Shadows | Shadows / map | Lit pieces (parts found lit + in shadow) "
           "| Eye's map of the pieces | (Shadows + that) / map | Map faces, without → with shadows |")
     print("|---|---:|---:|---:|---:|---:|---:|---:|---:|")
     for r in rows:
         print(f"| {r['family']} n = {r['n']} | {r['polygons']:,} | {r['map_seconds']:.3f} s | {r['shadow_seconds']:.3f} s | "
               f"{r['ratio']:.2f}× | {r['pieces']:,} ({r['lit_parts']:,} + {r['shadowed_parts']:,}) | "
               f"{r['lit_map_seconds']:.3f} s | {r['total_ratio']:.2f}× | {r['map_faces']:,} → {r['lit_map_faces']:,} |")
-    if a.json:
+    if a.json and not a.from_json:
         pathlib.Path(a.json).write_text(json.dumps({"runs": a.runs, "rows": rows}, indent=1) + "\n")
+    if a.plot:
+        plot(rows, a.plot)
 
 
 if __name__ == "__main__":

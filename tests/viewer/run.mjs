@@ -607,6 +607,34 @@ await pixelChecks(small, page, VIEWS, 40, 28);
   await p.close();
 }
 
+// Shadows: `genbsp view --light` lists the lights reaching each face; the
+// page draws the faces no light reaches at 35 % of their colour.
+if (useView) {
+  const html = join(work, "lit.html");
+  run(["view", small.off, "--eye", small.eye, "--light", "13/3,-5/2,1", "-o", html]);
+  const lit = unembed(readFileSync(html, "utf8"));
+  const scene = { ...small, html, map: lit.map, geo: geometry(lit.map) };
+  const p = await open(scene);
+  await p.evaluate(async (d) => { await window.genbspView.setOptions({ overlay: false, edges: false }); await window.genbspView.setView(d, 110); }, [0.1, -0.3, 0.95]);
+  const samples = interior(scene, await sampleGrid(p, 40, 28));
+  const faces = await p.evaluate((ds) => ds.map((d) => window.genbspView.locate(d).face), samples.map((s) => s.d));
+  const palette = new Map(await p.evaluate((ps) => ps.map((q) => [q, window.genbspView.colourOf(q)]), [...new Set(faces.map((f) => lit.map.faces[f].polygon))]));
+  const dim = (hex) => "#" + [1, 3, 5].map((k) => Math.round(parseInt(hex.slice(k, k + 2), 16) * 0.35).toString(16).padStart(2, "0")).join("");
+  const bad = [];
+  let dark = 0, bright = 0;
+  samples.forEach((s, i) => {
+    const f = lit.map.faces[faces[i]];
+    if (f.polygon < 0) return;
+    const inShadow = Array.isArray(f.lights) && f.lights.length === 0, want = inShadow ? dim(palette.get(f.polygon)) : palette.get(f.polygon);
+    inShadow ? dark++ : bright++;
+    if (!closeRGB(s.rgb, want)) bad.push(`(${s.x},${s.y}) polygon ${f.polygon}${inShadow ? " in shadow" : ""}: ${rgbHex(s.rgb)} not ${want}`);
+  });
+  check("bricks: shadows: faces no light reaches are drawn dark, the others in their colour",
+    bad.length === 0 && dark >= 10 && bright >= 10, `${dark} pixels in shadow, ${bright} lit` + (bad.length ? "; " + bad.slice(0, 3).join("; ") : ""));
+  check("bricks: shadows: every face of the lit map lists its lights", lit.map.faces.every((f) => f.polygon < 0 || Array.isArray(f.lights)));
+  await p.close();
+}
+
 // The URL's fragment sets the first view; Reset goes back to it.
 {
   const dir = unit([0.4, -0.2, 0.85]);
