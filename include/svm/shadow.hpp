@@ -1,6 +1,6 @@
 /// @file
-/// Shadows from point lights: the visibility map's construction seen from
-/// each light.  The scene's depth-order tree is traversed front to back from
+/// Shadows from point lights and lights at infinity: the visibility map's
+/// construction seen from each light.  The scene's depth-order tree is traversed front to back from
 /// the light and each fragment descends a coverage tree (the visibility pass
 /// of `build.hpp`); a part that reaches free space is what the light sees,
 /// a part that reaches covered space is in shadow.  Each part, a spherical
@@ -10,7 +10,9 @@
 /// the light and a line where two input-derived planes meet), so a piece's
 /// vertices, and every predicate on them, keep the degree bound that
 /// DESIGN.md requires.  With several lights, each polygon's partitions are
-/// overlaid, and a piece carries the set of lights that reach it.
+/// overlaid, and a piece carries the set of lights that reach it.  A light
+/// at infinity is a finite light in the scene's image under a projective
+/// map (`detail::sun_pass`).
 ///
 /// The pieces are ordinary convex inputs of `svm::build` (`convex_piece`),
 /// labelled by region (`label_regions`): the eye's map then draws shadow
@@ -19,7 +21,6 @@
 
 #include "build.hpp"
 
-#include <bit>
 #include <map>
 
 namespace svm {
@@ -47,8 +48,8 @@ struct shadow_statistics {
   std::size_t input_polygons = 0;
   std::size_t lights = 0;
   std::size_t fragments = 0;       ///< of the lights' depth-order trees, all lights
-  std::size_t lit_parts = 0;       ///< parts lifted lit, all lights
-  std::size_t shadowed_parts = 0;  ///< parts lifted in shadow, all lights
+  std::size_t lit_parts = 0;       ///< parts found lit (and made), all lights
+  std::size_t shadowed_parts = 0;  ///< parts found in shadow (made when asked), all lights
   std::size_t pieces = 0;          ///< after the overlay of all lights
   std::uint64_t filter_fallbacks = 0;
   double seconds = 0;
@@ -93,8 +94,16 @@ std::optional<geometry::e3::sub_hyperplane<FT>> intersect(geometry::e3::sub_hype
   return a;
 }
 
-/// Each polygon's pieces seen from one light, lit or not.
-template <geometry::number FT> using light_split = std::vector<std::vector<std::pair<geometry::e3::sub_hyperplane<FT>, bool>>>;
+/// A piece of a polygon seen from one light: lit or not, and whether it is
+/// the polygon whole.
+template <geometry::number FT> struct light_part {
+  geometry::e3::sub_hyperplane<FT> shape;
+  bool lit = false;
+  bool whole = false;
+};
+
+/// Each polygon's pieces seen from one light.
+template <geometry::number FT> using light_split = std::vector<std::vector<light_part<FT>>>;
 
 /// The visibility pass from `light` over `shapes`: each polygon split into
 /// what the light sees of its front side (lit) and the rest.  A polygon
@@ -114,7 +123,7 @@ light_split<FT> light_pass(std::vector<geometry::e3::sub_hyperplane<FT>> const& 
   for (std::uint32_t i = 0; i < n; ++i) {
     auto side = e3::side(shapes[i].support, light);
     if (side == oriented_side::on) {
-      if (make_dark) out[i].push_back({shapes[i], false});
+      if (make_dark) out[i].push_back({shapes[i], false, true});
       dark[i] = 1;
       continue;
     }
@@ -158,7 +167,7 @@ light_split<FT> light_pass(std::vector<geometry::e3::sub_hyperplane<FT>> const& 
     if (!lights || hidden == 0 || seen == 0) {
       bool is_lit = lights && hidden == 0;
       ++(is_lit ? lit_whole : dark_whole)[fr.id];
-      if (is_lit || make_dark) out[fr.id].push_back({fr.piece, is_lit});
+      if (is_lit || make_dark) out[fr.id].push_back({fr.piece, is_lit, false});
       ++(is_lit ? st.lit_parts : st.shadowed_parts);
     } else {
       for (auto const* group : {&lit, &unlit}) {
@@ -169,24 +178,103 @@ light_split<FT> light_pass(std::vector<geometry::e3::sub_hyperplane<FT>> const& 
         }
         for (auto const& p : *group)
           if (auto s = lifted(fr.piece, projected, p)) {
-            out[fr.id].push_back({std::move(*s), is_lit});
+            out[fr.id].push_back({std::move(*s), is_lit, false});
             ++(is_lit ? st.lit_parts : st.shadowed_parts);
           }
       }
     }
     pass.rebuild_if_grown();
   });
-  // A polygon all of whose fragments were lit whole, or dark whole, is one piece.
+  // A polygon all of whose fragments were lit whole, or dark whole, is one
+  // piece: the polygon itself.
   for (std::uint32_t i = 0; i < n; ++i)
-    if (fragments_of[i] >= 2 && (lit_whole[i] == fragments_of[i] || dark_whole[i] == fragments_of[i])) {
+    if (fragments_of[i] >= 1 && (lit_whole[i] == fragments_of[i] || dark_whole[i] == fragments_of[i])) {
       bool is_lit = lit_whole[i] == fragments_of[i];
       out[i].clear();
-      if (is_lit || make_dark) out[i].push_back({shapes[i], is_lit});
+      if (is_lit || make_dark) out[i].push_back({shapes[i], is_lit, true});
     }
   return out;
 }
 
+/// The pass from a light at infinity, in direction `d` (towards it): the
+/// pass from a finite light in the scene's image under a projective map.
+/// The map x ↦ s·x / (s + d·x), with s = 2·max|d·x| + 1 over the scene's
+/// vertices, keeps every vertex of the scene on the positive side (s + d·x
+/// > 0), maps lines to lines and planes to planes, keeps orientations
+/// (determinant s³·s > 0), and sends the point at infinity in direction d to
+/// the finite point s·d/|d|²: the parallel rays towards the sun become rays
+/// towards that point, in the same order along each.  Pieces come back
+/// through the map's transpose, which sends the image's plane (a, b, c, e)
+/// to (s·a + e·d, s·e): planes of the input's image are input-derived, so
+/// the pieces keep the degree bound (a constant more).
+template <geometry::number FT>
+light_split<FT> sun_pass(std::vector<polygon<FT>> const& polygons, std::vector<geometry::e3::sub_hyperplane<FT>> const& shapes,
+                         std::array<FT, 3> const& d, shadow_options const& options, bool make_dark, std::vector<char>& dark,
+                         shadow_statistics& st) {
+  using namespace geometry;
+  auto along = [&](e3::point<FT> const& q) { return d[0] * q.x() + d[1] * q.y() + d[2] * q.z(); };
+  FT m(0);
+  for (auto const& p : polygons)
+    for (auto const& q : p.vertices) {
+      FT v = along(q);
+      if (v < 0) v = -v;
+      if (m < v) m = v;
+    }
+  FT const s = FT(2) * m + FT(1);
+  std::vector<e3::sub_hyperplane<FT>> image;
+  image.reserve(polygons.size());
+  for (auto const& p : polygons) {
+    std::vector<e3::point<FT>> v;
+    v.reserve(p.vertices.size());
+    for (auto const& q : p.vertices) {
+      FT w = s + along(q);
+      v.emplace_back(s * q.x() / w, s * q.y() / w, s * q.z() / w);
+    }
+    auto shape = e3::convex_polygon<FT>(v, p.face);
+    for (auto& b : shape.bounds) b.original.tag = edge_tag_bit | p.face;
+    image.push_back(std::move(shape));
+  }
+  FT dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+  e3::point<FT> light(s * d[0] / dd, s * d[1] / dd, s * d[2] / dd);
+  auto split = light_pass(image, light, options, make_dark, dark, st);
+  auto back = [&](e3::hyperplane<FT> const& h) {
+    auto const& n = h.n;
+    return e3::hyperplane<FT>(hvec<FT, 4>(std::array<FT, 4>{s * n[0] + n[3] * d[0], s * n[1] + n[3] * d[1], s * n[2] + n[3] * d[2], n[3] * s}),
+                              h.tag);
+  };
+  for (std::size_t i = 0; i < split.size(); ++i)
+    for (auto& part : split[i]) {
+      if (part.whole) {
+        part.shape = shapes[i];
+        continue;
+      }
+      std::optional<e3::sub_hyperplane<FT>> r = e3::whole_plane(back(part.shape.support));
+      for (auto const& b : part.shape.bounds) {
+        r = e3::split(*r, back(b.original)).positive;
+        if (!r) throw std::logic_error("svm::compute_shadows: a piece vanished on its way back from the sun's image");
+      }
+      part.shape = std::move(*r);
+    }
+  return split;
+}
+
 } // namespace detail
+
+/// A light: a point, or a light at infinity (the sun), given by the
+/// direction towards it.
+template <geometry::number FT> struct light_source {
+  std::optional<geometry::e3::point<FT>> point; ///< none: at infinity
+  std::array<FT, 3> direction{};                ///< towards the light at infinity
+  static light_source at(geometry::e3::point<FT> p) { return {std::move(p), {}}; }
+  static light_source sun(std::array<FT, 3> d) { return {std::nullopt, std::move(d)}; }
+};
+
+/// The pieces of `polygons` lit by each of `lights` (points or suns): see
+/// the overload for points.  Throws `std::invalid_argument` for a sun's zero
+/// direction.
+template <geometry::number FT>
+shadows<FT> compute_shadows(std::vector<polygon<FT>> const& polygons, std::vector<light_source<FT>> const& lights,
+                            shadow_options const& options = {});
 
 /// The pieces of `polygons` (as `svm::build` takes them) lit by each of
 /// `lights` (at most `max_lights`; none lies on a polygon's plane on its
@@ -195,8 +283,24 @@ light_split<FT> light_pass(std::vector<geometry::e3::sub_hyperplane<FT>> const& 
 template <geometry::number FT>
 shadows<FT> compute_shadows(std::vector<polygon<FT>> const& polygons, std::vector<geometry::e3::point<FT>> const& lights,
                             shadow_options const& options = {}) {
+  std::vector<light_source<FT>> sources;
+  for (auto const& l : lights) sources.push_back(light_source<FT>::at(l));
+  return compute_shadows(polygons, sources, options);
+}
+
+template <geometry::number FT>
+shadows<FT> compute_shadows(std::vector<polygon<FT>> const& polygons, std::vector<light_source<FT>> const& lights,
+                            shadow_options const& options) {
   using namespace geometry;
   if (lights.size() > max_lights) throw std::invalid_argument("svm::compute_shadows: at most 64 lights");
+  for (auto const& l : lights)
+    if (!l.point && l.direction[0] == 0 && l.direction[1] == 0 && l.direction[2] == 0)
+      throw std::invalid_argument("svm::compute_shadows: a sun's direction is zero");
+  auto pass = [&](light_source<FT> const& l, bool make_dark, std::vector<char>& dark, shadow_statistics& st,
+                  std::vector<e3::sub_hyperplane<FT>> const& shapes) {
+    return l.point ? detail::light_pass(shapes, *l.point, options, make_dark, dark, st)
+                   : detail::sun_pass(polygons, shapes, l.direction, options, make_dark, dark, st);
+  };
   auto t0 = std::chrono::steady_clock::now();
   auto fallbacks0 = filter_stats().fallbacks;
   shadows<FT> out;
@@ -218,9 +322,9 @@ shadows<FT> compute_shadows(std::vector<polygon<FT>> const& polygons, std::vecto
   if (!make_dark) {
     // One light, lit pieces only.
     if (options.progress) options.progress(0.0);
-    auto split = detail::light_pass(shapes, lights[0], options, false, out.dark, st);
+    auto split = pass(lights[0], false, out.dark, st, shapes);
     for (std::uint32_t i = 0; i < split.size(); ++i)
-      for (auto& [s, lit] : split[i]) out.pieces.push_back({std::move(s), i, 1});
+      for (auto& part : split[i]) out.pieces.push_back({std::move(part.shape), i, 1});
     st.pieces = out.pieces.size();
     if (options.progress) options.progress(1.0);
     st.filter_fallbacks = filter_stats().fallbacks - fallbacks0;
@@ -230,25 +334,25 @@ shadows<FT> compute_shadows(std::vector<polygon<FT>> const& polygons, std::vecto
   std::vector<char> ignored(polygons.size(), 0);
   for (std::size_t k = 0; k < lights.size(); ++k) {
     if (options.progress) options.progress(static_cast<double>(k) / static_cast<double>(lights.size()));
-    auto split = detail::light_pass(shapes, lights[k], options, true, ignored, st);
+    auto split = pass(lights[k], true, ignored, st, shapes);
     std::uint64_t const bit = std::uint64_t{1} << k;
     for (std::size_t i = 0; i < shapes.size(); ++i) {
       auto& cur = current[i];
       auto const& by = split[i];
       if (by.size() == 1) {
         // One piece: the polygon whole, lit or not.
-        if (by[0].second)
+        if (by[0].lit)
           for (auto& c : cur) c.second |= bit;
         continue;
       }
       std::vector<std::pair<e3::sub_hyperplane<FT>, std::uint64_t>> next;
       if (cur.size() == 1) {
         // The polygon whole so far: its pieces are this light's.
-        for (auto const& [s, lit] : by) next.push_back({s, cur[0].second | (lit ? bit : 0)});
+        for (auto const& part : by) next.push_back({part.shape, cur[0].second | (part.lit ? bit : 0)});
       } else {
         for (auto const& [c, mask] : cur)
-          for (auto const& [s, lit] : by)
-            if (auto r = detail::intersect(c, s)) next.push_back({std::move(*r), mask | (lit ? bit : 0)});
+          for (auto const& part : by)
+            if (auto r = detail::intersect(c, part.shape)) next.push_back({std::move(*r), mask | (part.lit ? bit : 0)});
       }
       cur = std::move(next);
     }

@@ -15,6 +15,7 @@ check() { # check NAME CONDITION...
     failures=$((failures + 1))
   fi
 }
+quiet() { "$@" >/dev/null; }
 expect_error() { # expect_error NAME PATTERN COMMAND...: exit 2, one stderr line matching PATTERN
   local name=$1 pattern=$2
   shift 2
@@ -252,7 +253,7 @@ check "shadow json: the square's lit area" close_to "$(face_field "$work/shadow.
 check "shadow json: the near face is lit whole" close_to "$(face_field "$work/shadow.json" 0 'lit_area[0]')" 1
 check "shadow json: the far face turns its back" close_to "$(face_field "$work/shadow.json" 1 shadowed_area)" 1
 "$genbsp" shadow "$work/scene.off" --light 0,0,0 --light 1,1,0 -o "$work/shadow.off"
-check "shadow off: pieces written, and read back" "$genbsp" stats "$work/shadow.off" --eye 0,0,1/3
+check "shadow off: pieces written, and read back" quiet "$genbsp" stats "$work/shadow.off" --eye 0,0,1/3
 "$genbsp" shadow "$work/scene.off" --light 0,0,0 -o "$work/shadow.obj"
 check "shadow obj: coloured vertices" test "$(grep -c '^v [^ ]* [^ ]* [^ ]* [^ ]* [^ ]* [^ ]*$' "$work/shadow.obj")" -ge 12
 expect_error "shadow: unknown format" "\.ply" "$genbsp" shadow "$work/scene.off" --light 0,0,0 -o "$work/x.ply"
@@ -269,7 +270,13 @@ check "render --shadows lines: shadow boundaries in their own group" grep -q 'id
 "$genbsp" render "$work/scene.off" --eye 0,0,0 --dir 0,0,1 --light 1,1,0 --light -1,0,0 --shadows -o "$work/shadow.pdf"
 check "render --shadows: PDF" grep -q '^%PDF-' "$work/shadow.pdf"
 expect_error "render: --shadows needs a light" "--light" "$genbsp" render "$work/scene.off" --eye 0,0,0 --shadows -o "$work/x.svg"
-expect_error "render: no shadows from the sun yet" "--sun" "$genbsp" render "$work/scene.off" --eye 0,0,0 --sun 0,0,1 --shadows -o "$work/x.svg"
+expect_error "render: a zero sun" "--sun" "$genbsp" render "$work/scene.off" --eye 0,0,0 --sun 0,0,0 --shadows -o "$work/x.svg"
+# A sun far along -z: parallel rays cast the cube's 1 x 1 section on the square.
+"$genbsp" shadow "$work/scene.off" --sun 0,0,-1 -o "$work/sun.json"
+check "shadow --sun: the square's shadowed area" close_to "$(face_field "$work/sun.json" 6 shadowed_area)" 1
+check "shadow --sun: the square's lit area" close_to "$(face_field "$work/sun.json" 6 'lit_area[0]')" 63
+"$genbsp" render "$work/scene.off" --eye 0,0,0 --dir 0,0,1 --up 0,1,0 --style id --sun 1,2,-4 --light 1,1,0 --shadows --size 200x150 -o "$work/sun-id.svg"
+check "render --sun --light --shadows id: the square in shadow somewhere" grep -q 'data-face="6" fill="#800007"' "$work/sun-id.svg"
 "$genbsp" view "$work/scene.off" --eye 0,0,0 --light 1,1,0 -o "$work/view-lit.html"
 check "view --light: faces list the lights that reach them" grep -q '"polygon":6,"lights":\[0\]' "$work/view-lit.html"
 check "view --light: and the shadowed ones none" grep -q '"polygon":6,"lights":\[\]' "$work/view-lit.html"

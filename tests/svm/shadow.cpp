@@ -74,6 +74,28 @@ bool lit(std::vector<ref_polygon> const& scene, std::size_t i, V const& x, V con
   return true;
 }
 
+/// Whether the sun in direction `d` (towards it) lights the point `x`
+/// strictly inside polygon `i`: the same test with the ray from x along d.
+bool sunlit(std::vector<ref_polygon> const& scene, std::size_t i, V const& x, V const& d) {
+  if (dot(scene[i].n, d) <= 0) return false;
+  for (std::size_t j = 0; j < scene.size(); ++j) {
+    if (j == i) continue;
+    auto const& q = scene[j];
+    Q dx = dot(q.n, sub(x, q.v[0])), dd = dot(q.n, d);
+    if (dd == 0) continue;
+    if (dx == 0) {
+      bool coplanar = cross(q.n, scene[i].n) == V{0, 0, 0};
+      if (coplanar && j < i && inside_closed(q, x)) return false;
+      continue;
+    }
+    Q t = -dx / dd;
+    if (t <= 0) continue;
+    V y{x[0] + t * d[0], x[1] + t * d[1], x[2] + t * d[2]};
+    if (inside_closed(q, y)) return false;
+  }
+  return true;
+}
+
 /// The centroid of a piece's exact vertices: a point strictly inside it.
 V centroid(e3::sub_hyperplane<Q> const& s) {
   auto vs = e3::vertices(s);
@@ -98,7 +120,15 @@ struct checked {
 
 /// Every piece (or `sample` of them, chosen at random) against the
 /// reference for each light, and each polygon's pieces against its area.
-checked check(std::vector<svm::polygon<Q>> const& polygons, std::vector<P> const& lights, std::size_t sample = 0) {
+checked check(std::vector<svm::polygon<Q>> const& polygons, std::vector<svm::light_source<Q>> const& lights, std::size_t sample = 0);
+
+checked check(std::vector<svm::polygon<Q>> const& polygons, std::vector<P> const& points, std::size_t sample = 0) {
+  std::vector<svm::light_source<Q>> lights;
+  for (auto const& p : points) lights.push_back(svm::light_source<Q>::at(p));
+  return check(polygons, lights, sample);
+}
+
+checked check(std::vector<svm::polygon<Q>> const& polygons, std::vector<svm::light_source<Q>> const& lights, std::size_t sample) {
   auto sh = svm::compute_shadows<Q>(polygons, lights);
   auto scene = reference(polygons);
   // Areas: the pieces of a polygon, projected on the coordinate plane its
@@ -127,7 +157,7 @@ checked check(std::vector<svm::polygon<Q>> const& polygons, std::vector<P> const
     V x = centroid(p.shape);
     ++c.pieces;
     for (std::size_t k = 0; k < lights.size(); ++k) {
-      bool expected = lit(scene, p.polygon, x, vec(lights[k]));
+      bool expected = lights[k].point ? lit(scene, p.polygon, x, vec(*lights[k].point)) : sunlit(scene, p.polygon, x, lights[k].direction);
       bool got = (p.lights >> k) & 1u;
       ++(got ? c.lit : c.shadowed);
       if (expected != got) {
@@ -303,4 +333,54 @@ TEST_CASE("shadows: with one light, the lit pieces alone, and which polygons hav
     CHECK(all.dark == dark);
     CHECK(lit.pieces.size() < all.pieces.size());
   }
+}
+
+TEST_CASE("shadows: suns (lights at infinity) against the reference", "[shadow]") {
+  using L = svm::light_source<Q>;
+  {
+    auto c = check(svm::scenes::bricks(6).polygons, {L::sun({Q(1, 3), Q(-1, 4), Q(-1)})});
+    CHECK(c.wrong == 0);
+    CHECK(c.lit > 10);
+    CHECK(c.shadowed > 10);
+  }
+  {
+    auto s = svm::scenes::sphere(5);
+    auto polygons = s.polygons;
+    append(polygons, square(-400000, -400000, 400000, 400000, -150000, 0));
+    auto c = check(polygons, {L::sun({Q(2), Q(-1), Q(5)})});
+    CHECK(c.wrong == 0);
+    CHECK(c.lit > 10);
+    CHECK(c.shadowed > 10);
+  }
+  {
+    // Touching boxes on a floor, with two suns (one grazing the floor's
+    // plane, lighting it not at all) and a point light.
+    std::vector<svm::polygon<Q>> polygons;
+    svm::scenes::scene boxes;
+    svm::scenes::add_box(boxes, P(Q(0), Q(0), Q(0)), P(Q(4), Q(4), Q(4)));
+    svm::scenes::add_box(boxes, P(Q(4), Q(0), Q(0)), P(Q(8), Q(4), Q(2)));
+    append(polygons, boxes.polygons);
+    append(polygons, square(-20, -20, 30, 30, 0, 0));
+    append(polygons, square(-10, -10, 0, 20, 0, 0));
+    auto c = check(polygons, {L::sun({Q(1), Q(2), Q(3)}), L::sun({Q(-1), Q(0), Q(0)}), L::at(P(Q(9), Q(3), Q(12)))});
+    CHECK(c.wrong == 0);
+    CHECK(c.lit > 10);
+    CHECK(c.shadowed > 10);
+  }
+  CHECK_THROWS_AS(svm::compute_shadows<Q>(svm::scenes::bricks(2).polygons, {L::sun({Q(0), Q(0), Q(0)})}), std::invalid_argument);
+}
+
+TEST_CASE("shadows: a sun casts a floating triangle's translate on a floor", "[shadow]") {
+  // Parallel rays: the shadow of a triangle parallel to the floor is its
+  // translate, of the same area.
+  std::vector<svm::polygon<Q>> polygons = square(-100, -100, 100, 100, 0, 0);
+  std::vector<P> tri{P(Q(1), Q(2), Q(3)), P(Q(7, 2), Q(1), Q(3)), P(Q(2), Q(5), Q(3))};
+  append(polygons, {{tri, 0}});
+  auto sh = svm::compute_shadows<Q>(polygons, {svm::light_source<Q>::sun({Q(1), Q(-2), Q(5)})});
+  Q shadow(0);
+  for (auto const& p : sh.pieces)
+    if (p.polygon == 0 && p.lights == 0) shadow += *e3::projected_area(p.shape, 2);
+  Q area = *e3::projected_area(e3::convex_polygon<Q>(tri), 2);
+  CHECK(abs(shadow) == abs(area));
+  CHECK(area != 0);
 }

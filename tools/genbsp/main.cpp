@@ -89,10 +89,23 @@ loaded load(map_job const& job) {
   return l;
 }
 
+/// Lights in the number type `FT`.
+template <class FT> std::vector<svm::light_source<FT>> lights_in(std::vector<svm::light_source<rational>> const& lights) {
+  if constexpr (std::is_same_v<FT, rational>) return lights;
+  else {
+    std::vector<svm::light_source<FT>> out;
+    auto d = [](rational const& x) { return x.convert_to<double>(); };
+    for (auto const& l : lights)
+      out.push_back(l.point ? svm::light_source<FT>::at({d(l.point->x()), d(l.point->y()), d(l.point->z())})
+                            : svm::light_source<FT>::sun({d(l.direction[0]), d(l.direction[1]), d(l.direction[2])}));
+    return out;
+  }
+}
+
 /// Point lights for shadows: with any, the map is built from the scene's
 /// lit and shadowed pieces, its labels indices in `regions`.
 struct shadow_job {
-  std::vector<geometry::e3::point<rational>> lights;
+  std::vector<svm::light_source<rational>> lights;
   std::vector<svm::lit_region>* regions = nullptr;
   svm::shadow_statistics* stats = nullptr;
 };
@@ -102,13 +115,7 @@ template <class FT>
 svm::visibility_map<FT> map_of(std::vector<svm::polygon<FT>> const& polygons, geometry::e3::point<FT> const& eye, svm::build_options const& o,
                                shadow_job const& shadows) {
   if (shadows.lights.empty()) return svm::build<FT>(polygons, eye, o);
-  std::vector<geometry::e3::point<FT>> lights;
-  for (auto const& p : shadows.lights) {
-    if constexpr (std::is_same_v<FT, rational>)
-      lights.push_back(p);
-    else
-      lights.emplace_back(p.x().template convert_to<double>(), p.y().template convert_to<double>(), p.z().template convert_to<double>());
-  }
+  auto lights = lights_in<FT>(shadows.lights);
   auto sh = svm::compute_shadows<FT>(polygons, lights, {.seed = o.seed, .shadowed_pieces = false});
   if (shadows.stats) *shadows.stats = sh.stats;
   auto scene = svm::label_regions(sh, polygons);
@@ -261,9 +268,18 @@ svm::vec3 parse_vec(std::string const& text, std::string const& option) {
   return {p.x().convert_to<double>(), p.y().convert_to<double>(), p.z().convert_to<double>()};
 }
 
-/// At most `svm::max_lights` lights.
-void check_lights(std::vector<geometry::e3::point<rational>> const& lights, loaded const&) {
-  if (lights.size() > svm::max_lights) throw usage_error("--light: at most 64 lights");
+/// The lights of `--light X,Y,Z` (points) and then `--sun DX,DY,DZ`
+/// (directions towards lights at infinity), at most `svm::max_lights`.
+std::vector<svm::light_source<rational>> lights_from(std::vector<std::string> const& points, std::vector<std::string> const& suns) {
+  std::vector<svm::light_source<rational>> out;
+  for (auto const& t : points) out.push_back(svm::light_source<rational>::at(parse_point(t, "--light")));
+  for (auto const& t : suns) {
+    auto d = parse_point(t, "--sun");
+    if (d.x() == 0 && d.y() == 0 && d.z() == 0) throw usage_error("--sun: the zero vector is no direction");
+    out.push_back(svm::light_source<rational>::sun({d.x(), d.y(), d.z()}));
+  }
+  if (out.size() > svm::max_lights) throw usage_error("--light, --sun: at most 64 lights");
+  return out;
 }
 
 /// What `genbsp render` knows of each input face: its colour and its plane.
@@ -313,15 +329,15 @@ void write_drawing(svm::render::drawing const& d, std::string const& path, int d
 
 /// `genbsp shadow`: the pieces as coloured OFF or OBJ (decimal vertices,
 /// 17 significant digits), or a JSON summary of areas per face.
-std::string shadow_output(map_job const& job, std::vector<std::string> const& light_texts, std::string const& out) {
+std::string shadow_output(map_job const& job, std::vector<std::string> const& light_texts, std::vector<std::string> const& sun_texts,
+                          std::string const& out) {
   std::string ext = std::filesystem::path(out).extension().string();
   for (auto& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
   if (ext != ".off" && ext != ".obj" && ext != ".json")
     throw usage_error(out + ": unknown output format '" + ext + "' (use .off, .obj or .json)");
   auto l = load(job);
-  std::vector<geometry::e3::point<rational>> lights;
-  for (auto const& t : light_texts) lights.push_back(parse_point(t, "--light"));
-  check_lights(lights, l);
+  auto lights = lights_from(light_texts, sun_texts);
+  if (lights.empty()) throw usage_error("shadow: give at least one --light X,Y,Z or --sun DX,DY,DZ");
   auto colours = [&] {
     std::vector<std::optional<geometry::io::rgb>> c;
     for (auto const& f : geometry::io::read_scene(job.scene_path).faces) c.push_back(f.colour);
@@ -332,7 +348,7 @@ std::string shadow_output(map_job const& job, std::vector<std::string> const& li
     so.progress = [](double f) { std::fprintf(stderr, "genbsp: shadows %d%%\n", static_cast<int>(f * 100)); };
   // Areas need only the lit pieces (the rest of each face is in shadow).
   so.shadowed_pieces = ext != ".json";
-  auto write = [&]<class FT>(std::vector<svm::polygon<FT>> const& polygons, std::vector<geometry::e3::point<FT>> const& ls) {
+  auto write = [&]<class FT>(std::vector<svm::polygon<FT>> const& polygons, std::vector<svm::light_source<FT>> const& ls) {
     auto sh = svm::compute_shadows<FT>(polygons, ls, so);
     auto d = [](FT const& x) {
       if constexpr (std::is_same_v<FT, double>) return x;
@@ -425,7 +441,11 @@ std::string shadow_output(map_job const& job, std::vector<std::string> const& li
     for (std::size_t f = 0; f < nf; ++f)
       if (present[f]) faces.push_back({{"face", f}, {"area", area[f]}, {"lit_area", lit[f]}, {"shadowed_area", dark[f]}});
     json jl = json::array();
-    for (auto const& t : lights) jl.push_back({t.x().convert_to<double>(), t.y().convert_to<double>(), t.z().convert_to<double>()});
+    auto d3 = [](auto const& x, auto const& y, auto const& z) {
+      return json{x.template convert_to<double>(), y.template convert_to<double>(), z.template convert_to<double>()};
+    };
+    for (auto const& t : lights)
+      jl.push_back(t.point ? d3(t.point->x(), t.point->y(), t.point->z()) : json{{"sun", d3(t.direction[0], t.direction[1], t.direction[2])}});
     auto const& st = sh.stats;
     json stats{{"input_faces", l.input_faces}, {"polygons", st.input_polygons},     {"lights", st.lights},
                {"fragments", st.fragments},   {"lit_parts", st.lit_parts},         {"shadowed_parts", st.shadowed_parts},
@@ -440,9 +460,7 @@ std::string shadow_output(map_job const& job, std::vector<std::string> const& li
       for (auto const& q : p.vertices) v.emplace_back(q.x().convert_to<double>(), q.y().convert_to<double>(), q.z().convert_to<double>());
       polys.push_back({std::move(v), p.face});
     }
-    std::vector<geometry::e3::point<double>> ls;
-    for (auto const& q : lights) ls.emplace_back(q.x().convert_to<double>(), q.y().convert_to<double>(), q.z().convert_to<double>());
-    return write(polys, ls);
+    return write(polys, lights_in<double>(lights));
   }
   std::vector<svm::polygon<rational>> polys;
   for (auto const& p : l.prepared.polygons) polys.push_back({p.vertices, p.face});
@@ -468,13 +486,14 @@ int run(int argc, char** argv) {
   map_job sj;
   auto* stats = app.add_subcommand("stats", "sizes and times of a map, as one JSON object");
   sj.add_options(*stats);
-  std::vector<std::string> stats_lights;
+  std::vector<std::string> stats_lights, stats_suns;
   stats->add_option("--light", stats_lights, "the map of the scene's lit and shadowed pieces from these point lights (repeatable)");
+  stats->add_option("--sun", stats_suns, "and from these lights at infinity, DX,DY,DZ towards each (repeatable)");
 
   map_job rj;
   std::string render_out, look_text, dir_text, up_text, size_text, projection_name = "perspective",
-                           style_name = "shaded", sun_text, shift_text;
-  std::vector<std::string> render_lights;
+                           style_name = "shaded", shift_text;
+  std::vector<std::string> render_lights, render_suns;
   bool render_shadows = false;
   double fov = 0, crease = 0, tolerance = 0.1;
   int digits = 2;
@@ -490,7 +509,7 @@ int run(int argc, char** argv) {
       ->check(CLI::IsMember({"perspective", "stereographic", "fisheye", "fisheye-equidistant", "fisheye-equisolid", "equirectangular", "cube"}));
   render->add_option("--style", style_name, "shaded (default), flat, lines or id")->check(CLI::IsMember({"shaded", "flat", "lines", "id"}));
   render->add_option("--light", render_lights, "a point light at X,Y,Z (read exactly; repeat for more, up to 64; default: a head light at the eye)");
-  render->add_option("--sun", sun_text, "or a light at infinity: the direction towards it, DX,DY,DZ (shading only)");
+  render->add_option("--sun", render_suns, "a light at infinity: the direction towards it, DX,DY,DZ (repeatable)");
   render->add_flag("--shadows", render_shadows, "cast the lights' shadows, exactly (lit parts shaded per light, the rest ambient)");
   render->add_option("--crease", crease, "lines: draw edges between polygons only where their planes meet at more than this angle (degrees)")->check(CLI::Range(0.0, 180.0));
   render->add_option("--shift", shift_text, "perspective image-plane shift SX,SY in image half-widths (keeps verticals vertical)");
@@ -503,16 +522,18 @@ int run(int argc, char** argv) {
   auto* view = app.add_subcommand("view", "write one self-contained HTML page that looks around from the eye (docs/viewer.md)");
   vj.add_options(*view);
   view->add_option("-o,--output", view_out, "output VIEWER.html (opens from disk, no network)")->required();
-  std::vector<std::string> view_lights;
+  std::vector<std::string> view_lights, view_suns;
   view->add_option("--light", view_lights, "a point light at X,Y,Z whose shadows the page shows (repeat for more, up to 64)");
+  view->add_option("--sun", view_suns, "a light at infinity, DX,DY,DZ towards it, whose shadows the page shows (repeatable)");
 
   map_job hj;
-  std::vector<std::string> shadow_lights;
+  std::vector<std::string> shadow_lights, shadow_suns;
   std::string shadow_out;
   auto* shadow = app.add_subcommand("shadow", "split every face into lit and shadowed pieces, exactly, as OFF, OBJ (coloured) or JSON (areas)");
   shadow->add_flag("--progress", hj.progress, "report progress on standard error");
   shadow->add_option("SCENE", hj.scene_path, "scene file: OFF, OBJ or STL (face index = order in the file)")->required();
-  shadow->add_option("--light", shadow_lights, "a point light at X,Y,Z (read exactly; repeat for more, up to 64)")->required();
+  shadow->add_option("--light", shadow_lights, "a point light at X,Y,Z (read exactly; repeat for more, up to 64 lights in all)");
+  shadow->add_option("--sun", shadow_suns, "a light at infinity: the direction towards it, DX,DY,DZ (repeatable; after the points in the lights' order)");
   shadow->add_option("--number", hj.number, "arithmetic: exact (default) or double")->check(CLI::IsMember({"exact", "double"}));
   shadow->add_option("-o,--output", shadow_out, "output OUT.off or OUT.obj (pieces coloured lit or dark), or OUT.json (areas per face)")->required();
 
@@ -558,8 +579,7 @@ int run(int argc, char** argv) {
     shadow_job shadows;
     svm::shadow_statistics sst;
     std::vector<svm::lit_region> regions;
-    for (auto const& t : stats_lights) shadows.lights.push_back(parse_point(t, "--light"));
-    check_lights(shadows.lights, l);
+    shadows.lights = lights_from(stats_lights, stats_suns);
     shadows.stats = &sst;
     shadows.regions = &regions;
     std::cout << with_map(
@@ -688,19 +708,12 @@ int run(int argc, char** argv) {
     ro.crease = crease;
     ro.tolerance = tolerance;
     ro.eye = eye;
-    if (!sun_text.empty()) {
-      if (!render_lights.empty()) throw usage_error("--sun and --light: give one kind of light");
-      if (render_shadows) throw usage_error("--sun: shadows from a light at infinity are not supported yet; put a --light far away");
-      ro.light = parse_vec(sun_text, "--sun");
-    }
-    if (render_shadows && render_lights.empty()) throw usage_error("--shadows: give at least one --light X,Y,Z");
     shadow_job shadows;
     std::vector<svm::lit_region> regions;
-    for (auto const& t : render_lights) {
-      shadows.lights.push_back(parse_point(t, "--light"));
-      ro.lights.push_back(parse_vec(t, "--light"));
-    }
-    check_lights(shadows.lights, l);
+    shadows.lights = lights_from(render_lights, render_suns);
+    if (render_shadows && shadows.lights.empty()) throw usage_error("--shadows: give at least one --light X,Y,Z or --sun DX,DY,DZ");
+    for (auto const& t : render_lights) ro.lights.push_back(parse_vec(t, "--light"));
+    for (auto const& t : render_suns) ro.suns.push_back(parse_vec(t, "--sun"));
     if (!render_shadows) shadows.lights.clear();
     else ro.regions = &regions, shadows.regions = &regions;
     // The views to draw: one, or the six faces of a cube.
@@ -759,8 +772,7 @@ int run(int argc, char** argv) {
     }
     shadow_job shadows;
     std::vector<svm::lit_region> regions;
-    for (auto const& t : view_lights) shadows.lights.push_back(parse_point(t, "--light"));
-    check_lights(shadows.lights, l);
+    shadows.lights = lights_from(view_lights, view_suns);
     shadows.regions = &regions;
     auto map_text = with_map(
         vj, l, [&](auto const& vm) { return map_json(vm, eye, l, shadows.lights.empty() ? nullptr : &regions).dump(); }, {}, shadows);
@@ -780,7 +792,7 @@ int run(int argc, char** argv) {
     put("/*GENBSP_COLORS*/null", safe(colours.dump()));
     write_file(view_out, page);
   } else if (*shadow) {
-    write_file(shadow_out, shadow_output(hj, shadow_lights, shadow_out));
+    write_file(shadow_out, shadow_output(hj, shadow_lights, shadow_suns, shadow_out));
   } else if (*scene) {
     svm::scenes::scene s = family == "bricks"          ? svm::scenes::bricks(n)
                            : family == "hidden-bricks" ? svm::scenes::hidden_bricks(n)

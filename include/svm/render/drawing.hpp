@@ -93,8 +93,8 @@ struct options {
   /// angle between their planes exceeds this (degrees); at 0, only edges
   /// between polygons in one plane are left out.
   double crease = 0;
-  std::optional<vec3> light; ///< direction towards a light at infinity (the sun)
-  std::vector<vec3> lights;  ///< point lights; with neither, a head light at the eye
+  std::vector<vec3> lights; ///< point lights (lights 0, 1, … of `regions`)
+  std::vector<vec3> suns;   ///< directions towards lights at infinity (the lights after the points); with neither, a head light at the eye
   vec3 eye{0, 0, 0};         ///< the observer (for the head light)
   rgb background{1, 1, 1};
   /// A map built from shadow pieces (`svm::label_regions`): its labels are
@@ -273,18 +273,15 @@ drawing draw(visibility_map<FT> const& vm, projector const& pr, std::vector<face
     auto const* fi = info(p);
     rgb c = fi && fi->colour ? *fi->colour : palette(p);
     if (o.style == style::flat || !fi || norm3(fi->normal) == 0) return c;
-    if (o.lights.empty()) {
-      vec3 l = o.light ? unit3(*o.light) : unit3(svm::detail::sub3(o.eye, fi->centre));
-      return shade(c, 0.2 + 0.8 * std::abs(dot3(l, fi->normal)));
-    }
-    // Point lights: without shadows each lights the side it faces; with
-    // shadows, a light lights the front where it reaches, which the eye sees
-    // only from the front.
+    if (o.lights.empty() && o.suns.empty()) return shade(c, 0.2 + 0.8 * std::abs(dot3(unit3(svm::detail::sub3(o.eye, fi->centre)), fi->normal)));
+    // Without shadows each light lights the side it faces; with shadows, a
+    // light lights the front where it reaches, which the eye sees only from
+    // the front.
     double sum = 0;
     bool eye_in_front = dot3(fi->normal, o.eye) > fi->offset;
     std::uint64_t reach = lights_of(label);
-    for (std::size_t k = 0; k < o.lights.size(); ++k) {
-      vec3 l = unit3(svm::detail::sub3(o.lights[k], fi->centre));
+    for (std::size_t k = 0; k < o.lights.size() + o.suns.size(); ++k) {
+      vec3 l = k < o.lights.size() ? unit3(svm::detail::sub3(o.lights[k], fi->centre)) : unit3(o.suns[k - o.lights.size()]);
       double d = dot3(l, fi->normal);
       if (!o.regions) sum += std::abs(d);
       else if (k < 64 && ((reach >> k) & 1u) && eye_in_front) sum += std::max(0.0, d);
