@@ -34,28 +34,40 @@ cell polygon_of(rect const& r) {
   return e2::convex_polygon<Q>({P(Q(r.x0), Q(r.y0)), P(Q(r.x1), Q(r.y0)), P(Q(r.x1), Q(r.y1)), P(Q(r.x0), Q(r.y1))});
 }
 
-/// Inserts `c` front to back: returns the area that reached free leaves (of
-/// the bounded parts), and covers it.  Free leaves carry their cell.
-Q insert(cover_tree& t, cell const& c, std::size_t& hidden) {
-  Q visible(0);
-  auto route = [&](cell& piece, bsp::node_id n) -> bsp::routed<cell> {
+/// How a piece goes down `t`: split where a node's line crosses it.
+auto router(cover_tree const& t) {
+  return [&t](cell& piece, bsp::node_id n) -> bsp::routed<cell> {
     auto r = K::split(piece, t.as_tree().splitter(n));
     if (!r.negative) return {+1, std::nullopt, std::nullopt};
     if (!r.positive) return {-1, std::nullopt, std::nullopt};
     return {0, std::move(r.negative), std::move(r.positive)};
   };
+}
+
+/// Hangs the bounds of `piece` (which reached the free `leaf` at `at`)
+/// under that leaf; `leaf` and `at` become the piece's own leaf; returns its cell.
+cell hang(cover_tree& t, cell const& piece, bsp::node_id& leaf, cover_tree::place& at) {
+  cell here = t.as_tree().leaf_data(leaf);
+  for (auto const& b : piece.bounds) {
+    auto r = K::split(here, b);
+    if (!r.negative || !r.positive) continue;
+    bsp::node_id n = t.split(at, b, *r.negative, *r.positive);
+    at = {n, +1};
+    leaf = t.as_tree().positive(n);
+    here = *r.positive;
+  }
+  return here;
+}
+
+/// Inserts `c` front to back: returns the area that reached free leaves (of
+/// the bounded parts), and covers it.  Free leaves carry their cell.
+Q insert(cover_tree& t, cell const& c, std::size_t& hidden) {
+  Q visible(0);
+  auto route = router(t);
   auto visit = [&](cell&& piece, bsp::node_id leaf, cover_tree::place at) {
     auto area = K::measure(piece);
     if (area) visible += *area;
-    cell here = t.as_tree().leaf_data(leaf);
-    for (auto const& b : piece.bounds) {
-      auto r = K::split(here, b);
-      if (!r.negative || !r.positive) continue;
-      bsp::node_id n = t.split(at, b, *r.negative, *r.positive);
-      at = {n, +1};
-      leaf = t.as_tree().positive(n);
-      here = *r.positive;
-    }
+    cell here = hang(t, piece, leaf, at);
     CHECK(K::measure(here) == area); // the leaf is now the piece
     t.cover(at, leaf);
   };
@@ -72,23 +84,10 @@ struct merged_areas {
 };
 merged_areas insert_merged(cover_tree& t, cell const& c) {
   merged_areas m;
-  auto route = [&](cell& piece, bsp::node_id n) -> bsp::routed<cell> {
-    auto r = K::split(piece, t.as_tree().splitter(n));
-    if (!r.negative) return {+1, std::nullopt, std::nullopt};
-    if (!r.positive) return {-1, std::nullopt, std::nullopt};
-    return {0, std::move(r.negative), std::move(r.positive)};
-  };
+  auto route = router(t);
   auto visit = [&](cell&& piece, bsp::node_id leaf, cover_tree::place at) {
     ++m.cells;
-    cell here = t.as_tree().leaf_data(leaf);
-    for (auto const& b : piece.bounds) {
-      auto r = K::split(here, b);
-      if (!r.negative || !r.positive) continue;
-      bsp::node_id n = t.split(at, b, *r.negative, *r.positive);
-      at = {n, +1};
-      leaf = t.as_tree().positive(n);
-      here = *r.positive;
-    }
+    hang(t, piece, leaf, at);
     t.cover(at, leaf);
   };
   auto part = [&](cell&& p, bool visible) {

@@ -89,6 +89,21 @@ loaded load(map_job const& job) {
   return l;
 }
 
+/// The scene's convex polygons in the number type `FT` (rounded to doubles for `double`).
+template <class FT> std::vector<svm::polygon<FT>> polygons_in(loaded const& l) {
+  std::vector<svm::polygon<FT>> out;
+  out.reserve(l.prepared.polygons.size());
+  for (auto const& p : l.prepared.polygons) {
+    if constexpr (std::is_same_v<FT, rational>) out.push_back({p.vertices, p.face});
+    else {
+      std::vector<geometry::e3::point<FT>> v;
+      for (auto const& q : p.vertices) v.emplace_back(q.x().convert_to<double>(), q.y().convert_to<double>(), q.z().convert_to<double>());
+      out.push_back({std::move(v), p.face});
+    }
+  }
+  return out;
+}
+
 /// Lights in the number type `FT`.
 template <class FT> std::vector<svm::light_source<FT>> lights_in(std::vector<svm::light_source<rational>> const& lights) {
   if constexpr (std::is_same_v<FT, rational>) return lights;
@@ -148,18 +163,10 @@ template <class F> auto with_map(map_job const& job, loaded const& l, F&& f, svm
     };
   }
   if (job.number == "double") {
-    std::vector<svm::polygon<double>> polys;
-    for (auto const& p : l.prepared.polygons) {
-      std::vector<geometry::e3::point<double>> v;
-      for (auto const& q : p.vertices) v.emplace_back(q.x().convert_to<double>(), q.y().convert_to<double>(), q.z().convert_to<double>());
-      polys.push_back({std::move(v), p.face});
-    }
     geometry::e3::point<double> e(eye.x().convert_to<double>(), eye.y().convert_to<double>(), eye.z().convert_to<double>());
-    return f(map_of<double>(polys, e, o, shadows));
+    return f(map_of<double>(polygons_in<double>(l), e, o, shadows));
   }
-  std::vector<svm::polygon<rational>> polys;
-  for (auto const& p : l.prepared.polygons) polys.push_back({p.vertices, p.face});
-  return f(map_of<rational>(polys, eye, o, shadows));
+  return f(map_of<rational>(polygons_in<rational>(l), eye, o, shadows));
 }
 
 json size_json(svm::map_size const& s) { return {{"vertices", s.vertices}, {"edges", s.edges}, {"faces", s.faces}}; }
@@ -453,18 +460,8 @@ std::string shadow_output(map_job const& job, std::vector<std::string> const& li
                {"peak_bytes", peak_bytes()}};
     return json{{"lights", std::move(jl)}, {"faces", std::move(faces)}, {"stats", std::move(stats)}}.dump(1) + "\n";
   };
-  if (job.number == "double") {
-    std::vector<svm::polygon<double>> polys;
-    for (auto const& p : l.prepared.polygons) {
-      std::vector<geometry::e3::point<double>> v;
-      for (auto const& q : p.vertices) v.emplace_back(q.x().convert_to<double>(), q.y().convert_to<double>(), q.z().convert_to<double>());
-      polys.push_back({std::move(v), p.face});
-    }
-    return write(polys, lights_in<double>(lights));
-  }
-  std::vector<svm::polygon<rational>> polys;
-  for (auto const& p : l.prepared.polygons) polys.push_back({p.vertices, p.face});
-  return write(polys, lights);
+  if (job.number == "double") return write(polygons_in<double>(l), lights_in<double>(lights));
+  return write(polygons_in<rational>(l), lights);
 }
 
 int run(int argc, char** argv) {
