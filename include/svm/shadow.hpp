@@ -12,7 +12,7 @@
 /// DESIGN.md requires.  With several lights, each polygon's partitions are
 /// overlaid, and a piece carries the set of lights that reach it.  A light
 /// at infinity is a finite light in the scene's image under a projective
-/// map (`detail::sun_pass`).
+/// map (`view_from_infinity`, parallel.hpp).
 ///
 /// The pieces are ordinary convex inputs of `svm::build` (`convex_piece`),
 /// labelled by region (`label_regions`): the eye's map then draws shadow
@@ -20,6 +20,7 @@
 #pragma once
 
 #include "build.hpp"
+#include "parallel.hpp"
 
 #include <map>
 
@@ -197,64 +198,23 @@ light_split<FT> light_pass(std::vector<geometry::e3::sub_hyperplane<FT>> const& 
 }
 
 /// The pass from a light at infinity, in direction `d` (towards it): the
-/// pass from a finite light in the scene's image under a projective map.
-/// The map x ↦ s·x / (s + d·x), with s = 2·max|d·x| + 1 over the scene's
-/// vertices, keeps every vertex of the scene on the positive side (s + d·x
-/// > 0), maps lines to lines and planes to planes, keeps orientations
-/// (determinant s³·s > 0), and sends the point at infinity in direction d to
-/// the finite point s·d/|d|²: the parallel rays towards the sun become rays
-/// towards that point, in the same order along each.  Pieces come back
-/// through the map's transpose, which sends the image's plane (a, b, c, e)
-/// to (s·a + e·d, s·e): planes of the input's image are input-derived, so
-/// the pieces keep the degree bound (a constant more).
+/// pass from a finite light in the scene's image under the projective map of
+/// `view_from_infinity` (parallel.hpp), the pieces carried back.
 template <geometry::number FT>
 light_split<FT> sun_pass(std::vector<polygon<FT>> const& polygons, std::vector<geometry::e3::sub_hyperplane<FT>> const& shapes,
                          std::array<FT, 3> const& d, shadow_options const& options, bool make_dark, std::vector<char>& dark,
                          shadow_statistics& st) {
-  using namespace geometry;
-  auto along = [&](e3::point<FT> const& q) { return d[0] * q.x() + d[1] * q.y() + d[2] * q.z(); };
-  FT m(0);
-  for (auto const& p : polygons)
-    for (auto const& q : p.vertices) {
-      FT v = along(q);
-      if (v < 0) v = -v;
-      if (m < v) m = v;
-    }
-  FT const s = FT(2) * m + FT(1);
-  std::vector<e3::sub_hyperplane<FT>> image;
+  view_from_infinity<FT> view(polygons, d);
+  std::vector<geometry::e3::sub_hyperplane<FT>> image;
   image.reserve(polygons.size());
-  for (auto const& p : polygons) {
-    std::vector<e3::point<FT>> v;
-    v.reserve(p.vertices.size());
-    for (auto const& q : p.vertices) {
-      FT w = s + along(q);
-      v.emplace_back(s * q.x() / w, s * q.y() / w, s * q.z() / w);
-    }
-    auto shape = e3::convex_polygon<FT>(v, p.face);
+  for (auto const& p : view.image(polygons)) {
+    auto shape = geometry::e3::convex_polygon<FT>(p.vertices, p.face);
     for (auto& b : shape.bounds) b.original.tag = edge_tag_bit | p.face;
     image.push_back(std::move(shape));
   }
-  FT dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-  e3::point<FT> light(s * d[0] / dd, s * d[1] / dd, s * d[2] / dd);
-  auto split = light_pass(image, light, options, make_dark, dark, st);
-  auto back = [&](e3::hyperplane<FT> const& h) {
-    auto const& n = h.n;
-    return e3::hyperplane<FT>(hvec<FT, 4>(std::array<FT, 4>{s * n[0] + n[3] * d[0], s * n[1] + n[3] * d[1], s * n[2] + n[3] * d[2], n[3] * s}),
-                              h.tag);
-  };
+  auto split = light_pass(image, view.eye(), options, make_dark, dark, st);
   for (std::size_t i = 0; i < split.size(); ++i)
-    for (auto& part : split[i]) {
-      if (part.whole) {
-        part.shape = shapes[i];
-        continue;
-      }
-      std::optional<e3::sub_hyperplane<FT>> r = e3::whole_plane(back(part.shape.support));
-      for (auto const& b : part.shape.bounds) {
-        r = e3::split(*r, back(b.original)).positive;
-        if (!r) throw std::logic_error("svm::compute_shadows: a piece vanished on its way back from the sun's image");
-      }
-      part.shape = std::move(*r);
-    }
+    for (auto& part : split[i]) part.shape = part.whole ? shapes[i] : view.carry(part.shape, false);
   return split;
 }
 

@@ -141,6 +141,16 @@ expect_error "render: up along the view" "up vector" "$genbsp" render "$work/sce
 expect_error "render: bad projection" "try --help" "$genbsp" render "$work/scene.off" --eye 0,0,0 --projection mercator -o "$work/x.svg"
 check "render: no file after an error" test ! -e "$work/x.svg"
 
+# render orthographic: looking along (1,1,3) from the point at infinity, the
+# cube's faces facing -x, -y and -z (2, 4, 0) and the square (6).
+"$genbsp" render "$work/scene.off" --projection orthographic --dir 1,1,3 --style id --size 200x150 -o "$work/ortho.svg"
+check "render orthographic: faces 0, 2, 4 and 6" test "$(grep -o 'data-face="[0-9]*"' "$work/ortho.svg" | sort -u | tr '\n' ' ')" = 'data-face="0" data-face="2" data-face="4" data-face="6" '
+"$genbsp" render "$work/scene.off" --projection orthographic --dir 0,0,1 --extent 2 --light 0,0,0 --shadows -o "$work/ortho.pdf"
+check "render orthographic with shadows: PDF" grep -q '^%PDF-' "$work/ortho.pdf"
+expect_error "render orthographic: no direction" "--dir" "$genbsp" render "$work/scene.off" --projection orthographic -o "$work/x.svg"
+expect_error "render: --eye is needed in perspective" "--eye" "$genbsp" render "$work/scene.off" -o "$work/x.svg"
+expect_error "render: --extent is orthographic" "--extent" "$genbsp" render "$work/scene.off" --eye 0,0,0 --extent 3 -o "$work/x.svg"
+
 # view: one self-contained page with the map in place of the placeholder.
 "$genbsp" view "$work/scene.off" --eye 0,0,0 -o "$work/view.html"
 check "view: a page" grep -q '<html' "$work/view.html"

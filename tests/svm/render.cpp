@@ -5,6 +5,7 @@
 // file's own inverse projection formulas (not the library's).
 #include <svm/build.hpp>
 #include <svm/camera.hpp>
+#include <svm/parallel.hpp>
 #include <svm/render/cairo.hpp>
 #include <svm/render/drawing.hpp>
 #include <svm/render/svg.hpp>
@@ -464,6 +465,69 @@ TEST_CASE("id renders with shadows agree with a ray caster with shadow rays", "[
   }
   std::cout << "render: shadows, " << agreeing << " of " << total << " pixels agree with the ray caster\n";
   CHECK(shadowed > total / 10);
+}
+
+TEST_CASE("orthographic id renders agree with a parallel ray caster", "[render][parallel]") {
+  if (!have("rsvg-convert")) {
+    WARN("rsvg-convert is not installed (Debian: librsvg2-bin): comparison skipped");
+    return;
+  }
+  using P = geometry::e3::point<Q>;
+  auto all = scenes();
+  all.push_back({"sphere (closed mesh)", svm::scenes::sphere(6)});
+  std::vector<std::array<Q, 3>> dirs{{Q(1, 3), Q(1, 5), Q(1)}, {Q(-2), Q(1), Q(-1, 2)}, {Q(0), Q(0), Q(1)}, {Q(1), Q(0), Q(0)}};
+  scratch tmp;
+  long total = 0, agreeing = 0, views = 0;
+  int const w = 160, h = 120;
+  for (auto const& [name, s] : all) {
+    // The centre of the bounding box, exactly, and its diagonal.
+    std::array<Q, 3> lo, hi;
+    bool first = true;
+    for (auto const& p : s.polygons)
+      for (auto const& q : p.vertices) {
+        for (std::size_t k = 0; k < 3; ++k) {
+          if (first || q[k] < lo[k]) lo[k] = q[k];
+          if (first || q[k] > hi[k]) hi[k] = q[k];
+        }
+        first = false;
+      }
+    P centre((lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2);
+    double diagonal = std::sqrt(dot(sub(to_double(P(hi[0], hi[1], hi[2])), to_double(P(lo[0], lo[1], lo[2]))),
+                                    sub(to_double(P(hi[0], hi[1], hi[2])), to_double(P(lo[0], lo[1], lo[2])))));
+    for (auto const& d : dirs) {
+      v3 f = normalized({d[0].convert_to<double>(), d[1].convert_to<double>(), d[2].convert_to<double>()});
+      v3 up = std::abs(f[2]) > 0.99 ? v3{0, 1, 0} : v3{0, 0, 1};
+      double extent = 0.8 * diagonal;
+      svm::view_from_infinity<Q> view(s.polygons, {-d[0], -d[1], -d[2]}, centre);
+      svm::projector pr(svm::parallel_camera(view, up, extent, w, h), svm::projection::perspective);
+      auto vm = svm::build<Q>(view.image(s.polygons), view.eye(), pr.window_options());
+      svm::render::options o;
+      o.style = svm::render::style::id;
+      auto drawing = svm::render::draw(vm, pr, {}, o);
+      auto svg_path = tmp / "ortho.svg", png_path = tmp / "ortho.png";
+      std::ofstream(svg_path) << svm::render::to_svg(drawing, 3);
+      REQUIRE(run("rsvg-convert -o '" + png_path.string() + "' '" + svg_path.string() + "'") == 0);
+      auto got = labels_of_png(png_path, w, h);
+      // The truth: a ray along f through the point of the plane through the
+      // centre that the pixel shows, from far behind.
+      v3 r = normalized(cross(f, up)), u = cross(r, f), c = to_double(centre);
+      sampler at = [tris = triangles(s), f, r, u, c, extent, diagonal](double x, double y) {
+        double a = (x - w / 2.0) / (w / 2.0) * extent / 2, b = (h / 2.0 - y) / (w / 2.0) * extent / 2;
+        v3 p{c[0] + a * r[0] + b * u[0] - 4 * diagonal * f[0], c[1] + a * r[1] + b * u[1] - 4 * diagonal * f[1],
+             c[2] + a * r[2] + b * u[2] - 4 * diagonal * f[2]};
+        return cast(tris, p, f);
+      };
+      auto want = truth(at, w, h);
+      CHECK(std::count_if(want.begin(), want.end(), [](long l) { return l >= 0; }) > w * h / 50); // the scene is in view
+      auto a = compare(got, want, w, h, at);
+      std::string what = name + ", along (" + d[0].str() + ", " + d[1].str() + ", " + d[2].str() + ")";
+      if (a.far > 0) keep(svg_path, name + "-ortho.svg");
+      expect_agreement(a, what);
+      total += a.pixels, agreeing += a.agree, ++views;
+    }
+  }
+  std::cout << "render: " << views << " orthographic views, " << agreeing << " of " << total << " pixels agree with the parallel ray caster\n";
+  CHECK(views >= 36);
 }
 
 TEST_CASE("PNG and PDF outputs through cairo match the SVG's id raster", "[render]") {

@@ -5,6 +5,7 @@
 #include <geometry/io/polygons.hpp>
 #include <geometry/io/scene.hpp>
 #include <svm/camera.hpp>
+#include <svm/parallel.hpp>
 #include <svm/query.hpp>
 #include <svm/render/cairo.hpp>
 #include <svm/render/svg.hpp>
@@ -66,10 +67,12 @@ struct map_job {
   std::string scene_path, eye_text, number = "exact";
   bool no_simplify = false, cull = false, progress = false;
 
-  void add_options(CLI::App& app) {
+  void add_options(CLI::App& app, bool eye_required = true) {
     app.add_flag("--progress", progress, "report the build's progress on standard error (always on a terminal, after a second)");
     app.add_option("SCENE", scene_path, "scene file: OFF, OBJ or STL (face index = order in the file)")->required();
-    app.add_option("--eye", eye_text, "the observer, X,Y,Z (read exactly)")->required();
+    auto* eye = app.add_option("--eye", eye_text, eye_required ? "the observer, X,Y,Z (read exactly)"
+                                                               : "the observer, X,Y,Z (read exactly; not for --projection orthographic)");
+    if (eye_required) eye->required();
     app.add_option("--number", number, "arithmetic: exact (default) or double")->check(CLI::IsMember({"exact", "double"}));
     app.add_flag("--no-simplify", no_simplify, "keep the partition edges between faces of the same polygon");
     app.add_flag("--cull-backfaces", cull, "drop polygons facing away (closed, outward-oriented solids only)");
@@ -167,6 +170,23 @@ template <class F> auto with_map(map_job const& job, loaded const& l, F&& f, svm
     return f(map_of<double>(polygons_in<double>(l), e, o, shadows));
   }
   return f(map_of<rational>(polygons_in<rational>(l), eye, o, shadows));
+}
+
+/// The map of a parallel view: the central map of the scene's image from
+/// the finite eye of `view` (with shadows, of its pieces carried there).
+svm::visibility_map<rational> orthographic_map(map_job const& job, svm::view_from_infinity<rational> const& view,
+                                               std::vector<svm::polygon<rational>> const& image, loaded const& l, svm::build_options o,
+                                               shadow_job const& shadows) {
+  o.simplify = !job.no_simplify;
+  o.cull_backfaces = job.cull;
+  if (shadows.lights.empty()) return svm::build<rational>(image, view.eye(), o);
+  auto polygons = polygons_in<rational>(l);
+  auto sh = svm::compute_shadows<rational>(polygons, shadows.lights, {.seed = o.seed, .shadowed_pieces = false});
+  if (shadows.stats) *shadows.stats = sh.stats;
+  auto scene = svm::label_regions(sh, polygons);
+  for (auto& p : scene.pieces) p.shape = view.carry(p.shape, true);
+  if (shadows.regions) *shadows.regions = std::move(scene.regions);
+  return svm::build<rational>(scene.pieces, view.eye(), o);
 }
 
 json size_json(svm::map_size const& s) { return {{"vertices", s.vertices}, {"edges", s.edges}, {"faces", s.faces}}; }
@@ -495,15 +515,18 @@ int run(int argc, char** argv) {
   double fov = 0, crease = 0, tolerance = 0.1;
   int digits = 2;
   auto* render = app.add_subcommand("render", "draw a scene from an eye as SVG, PDF, EPS or PNG, hidden parts removed exactly");
-  rj.add_options(*render);
+  rj.add_options(*render, false);
+  std::string extent_text;
   render->add_option("--look", look_text, "a point to look at, X,Y,Z (default: the scene's centre)");
   render->add_option("--dir", dir_text, "or a direction to look in, X,Y,Z");
   render->add_option("--up", up_text, "the image's vertical, X,Y,Z (default 0,0,1, or 0,1,0 when looking along z)");
   render->add_option("--fov", fov, "horizontal field of view in degrees (default 60; 360 for equirectangular)")->check(CLI::Range(0.001, 360.0));
   render->add_option("--size", size_text, "image size WxH in pixels (default 800x600; 1600x800 for equirectangular)");
   render->add_option("--projection", projection_name,
-                     "perspective, stereographic, fisheye (equidistant), fisheye-equisolid, equirectangular, or cube (six perspective files OUT-front, -right, -back, -left, -up, -down)")
-      ->check(CLI::IsMember({"perspective", "stereographic", "fisheye", "fisheye-equidistant", "fisheye-equisolid", "equirectangular", "cube"}));
+                     "perspective, stereographic, fisheye (equidistant), fisheye-equisolid, equirectangular, cube (six perspective files OUT-front, -right, -back, -left, -up, -down), "
+                     "or orthographic (a parallel view along --dir, exact: no --eye)")
+      ->check(CLI::IsMember({"perspective", "stereographic", "fisheye", "fisheye-equidistant", "fisheye-equisolid", "equirectangular", "cube", "orthographic"}));
+  render->add_option("--extent", extent_text, "orthographic: the width of the scene shown, in its units (default: the scene fits)");
   render->add_option("--style", style_name, "shaded (default), flat, lines or id")->check(CLI::IsMember({"shaded", "flat", "lines", "id"}));
   render->add_option("--light", render_lights, "a point light at X,Y,Z (read exactly; repeat for more, up to 64; default: a head light at the eye)");
   render->add_option("--sun", render_suns, "a light at infinity: the direction towards it, DX,DY,DZ (repeatable)");
@@ -665,7 +688,57 @@ int run(int argc, char** argv) {
       return c;
     }();
     auto infos = face_infos(l, scene_colours);
-    svm::vec3 eye = parse_vec(rj.eye_text, "--eye");
+    bool const ortho = projection_name == "orthographic";
+    if (!ortho && rj.eye_text.empty()) throw usage_error("--eye is required (except for --projection orthographic)");
+    if (ortho && !rj.eye_text.empty() && look_text.empty())
+      throw usage_error("--projection orthographic: the view has no eye; give --dir DX,DY,DZ (or --eye with --look)");
+    if (!ortho && !extent_text.empty()) throw usage_error("--extent is for --projection orthographic");
+    if (ortho && !shift_text.empty()) throw usage_error("--shift is for perspective views");
+    if (ortho && rj.number != "exact") throw usage_error("--projection orthographic: exact arithmetic only, for now");
+    // The scene's bounding box, exactly.
+    std::array<rational, 3> lo_q, hi_q;
+    bool any = false;
+    for (auto const& p : l.prepared.polygons)
+      for (auto const& q : p.vertices)
+        for (int k = 0; k < 3; ++k) {
+          if (!any || q[k] < lo_q[k]) lo_q[k] = q[k];
+          if (!any || q[k] > hi_q[k]) hi_q[k] = q[k];
+          any = any || k == 2;
+        }
+    if (ortho && !any) throw usage_error(rj.scene_path + ": an orthographic view needs a scene with faces");
+    std::optional<svm::view_from_infinity<rational>> parallel;
+    std::vector<svm::polygon<rational>> image_polygons;
+    svm::vec3 eye{0, 0, 0};
+    if (!rj.eye_text.empty()) eye = parse_vec(rj.eye_text, "--eye");
+    if (ortho) {
+      // The view from the point at infinity behind the camera: the central
+      // view of the scene's image from a finite point (svm/parallel.hpp).
+      geometry::e3::point<rational> centre = look_text.empty()
+                                                 ? geometry::e3::point<rational>((lo_q[0] + hi_q[0]) / 2, (lo_q[1] + hi_q[1]) / 2, (lo_q[2] + hi_q[2]) / 2)
+                                                 : parse_point(look_text, "--look");
+      std::array<rational, 3> d;
+      if (!dir_text.empty()) {
+        auto v = parse_point(dir_text, "--dir");
+        d = {v.x(), v.y(), v.z()};
+      } else if (!rj.eye_text.empty()) {
+        auto e = parse_point(rj.eye_text, "--eye");
+        d = {centre.x() - e.x(), centre.y() - e.y(), centre.z() - e.z()};
+      } else {
+        throw usage_error("--projection orthographic: give --dir DX,DY,DZ");
+      }
+      if (d[0] == 0 && d[1] == 0 && d[2] == 0) throw usage_error("--dir: the zero vector is no direction");
+      auto polys = polygons_in<rational>(l);
+      parallel.emplace(polys, std::array<rational, 3>{-d[0], -d[1], -d[2]}, centre);
+      image_polygons = parallel->image(polys);
+      dir_text = exact_text(d[0]) + "," + exact_text(d[1]) + "," + exact_text(d[2]);
+      look_text.clear();
+      // A far point towards the eye at infinity, for shading only.
+      svm::vec3 c{centre.x().convert_to<double>(), centre.y().convert_to<double>(), centre.z().convert_to<double>()};
+      svm::vec3 back = svm::detail::unit3({-d[0].convert_to<double>(), -d[1].convert_to<double>(), -d[2].convert_to<double>()});
+      double size = 0;
+      for (int k = 0; k < 3; ++k) size = std::max(size, (hi_q[k] - lo_q[k]).convert_to<double>());
+      eye = svm::detail::add3(c, svm::detail::mul3(back, 1e6 * (size + 1)));
+    }
     svm::vec3 forward;
     if (!dir_text.empty()) forward = parse_vec(dir_text, "--dir");
     else {
@@ -695,6 +768,28 @@ int run(int argc, char** argv) {
     cam.width = w;
     cam.height = h;
     cam.hfov = fov > 0 ? fov : (equirect ? 360 : cube ? 90 : 60);
+    if (ortho) {
+      svm::projector base(cam, svm::projection::perspective);
+      auto const& c = parallel->centre();
+      svm::vec3 cd{c.x().convert_to<double>(), c.y().convert_to<double>(), c.z().convert_to<double>()};
+      double extent = 0;
+      if (!extent_text.empty()) {
+        extent = parse_point(extent_text + ",0,0", "--extent").x().convert_to<double>();
+        if (!(extent > 0)) throw usage_error("--extent: the width shown must be positive");
+      } else {
+        // Fit the bounding box's corners, with a margin.
+        double half_w = 0, half_h = 0;
+        for (int corner = 0; corner < 8; ++corner) {
+          svm::vec3 p{(corner & 1 ? hi_q : lo_q)[0].convert_to<double>(), (corner & 2 ? hi_q : lo_q)[1].convert_to<double>(),
+                      (corner & 4 ? hi_q : lo_q)[2].convert_to<double>()};
+          auto v = svm::detail::sub3(p, cd);
+          half_w = std::max(half_w, std::abs(svm::detail::dot3(v, base.right())));
+          half_h = std::max(half_h, std::abs(svm::detail::dot3(v, base.up())));
+        }
+        extent = 2.1 * std::max({half_w, half_h * w / h, 1e-300});
+      }
+      cam = svm::parallel_camera(*parallel, cam.up, extent, w, h);
+    }
     if (!shift_text.empty()) {
       auto sh = parse_point(shift_text + ",0", "--shift");
       cam.shift_x = sh.x().convert_to<double>();
@@ -736,7 +831,7 @@ int run(int argc, char** argv) {
     } else {
       views.push_back({cam, render_out});
     }
-    auto kind = cube ? svm::projection::perspective : *svm::projection_from_name(projection_name);
+    auto kind = cube || ortho ? svm::projection::perspective : *svm::projection_from_name(projection_name);
     std::vector<std::pair<svm::render::drawing, std::string>> drawings;
     for (auto const& [c, path] : views) {
       std::optional<svm::projector> pr;
@@ -746,7 +841,8 @@ int run(int argc, char** argv) {
         throw usage_error(e.what());
       }
       svm::build_options o = pr->window_options();
-      auto d = with_map(rj, l, [&](auto const& vm) { return svm::render::draw(vm, *pr, infos, ro); }, o, shadows);
+      auto d = ortho ? svm::render::draw(orthographic_map(rj, *parallel, image_polygons, l, o, shadows), *pr, infos, ro)
+                     : with_map(rj, l, [&](auto const& vm) { return svm::render::draw(vm, *pr, infos, ro); }, o, shadows);
       drawings.push_back({std::move(d), path});
     }
     for (auto const& [d, path] : drawings) write_drawing(d, path, digits);

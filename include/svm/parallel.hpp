@@ -1,0 +1,148 @@
+/// @file
+/// Views from a point at infinity (parallel projections, and lights at
+/// infinity) by the central construction, exactly.
+///
+/// A projective map sends the point at infinity in direction `e` to a finite
+/// point and keeps the scene's order along every line parallel to `e`:
+///
+///     x ↦ c + s·(x − c) / (s + e·(x − c)),   s = 2·max|e·(x − c)| + 1
+///
+/// over the scene's vertices x, about a centre c.  Every vertex stays on the
+/// positive side of the plane the map sends to infinity (s + e·(x − c) > 0),
+/// so convex polygons stay convex and keep their orientation (the map's
+/// determinant is s⁴ > 0); lines go to lines and planes to planes; the plane
+/// e·(x − c) = 0 through the centre is fixed; and the lines parallel to `e`
+/// become the lines through the finite point c + s·e/(e·e), in the same
+/// order.  So the visibility map from that point of the scene's image is the
+/// map of the parallel view along −e, and a perspective camera there,
+/// looking along −e, draws the orthographic view of the plane through c.
+///
+/// A plane (a, b) of the image (a·(x' − c) + b = 0) is the plane
+/// (s·a + b·e, s·b) of the scene: input-derived planes stay input-derived,
+/// with a constant more in their degree, so the construction's degree bound
+/// holds.
+#pragma once
+
+#include "build.hpp"
+#include "camera.hpp"
+
+#include <array>
+#include <optional>
+#include <stdexcept>
+#include <vector>
+
+namespace svm {
+
+/// The projective map of a view from the point at infinity in direction
+/// `toward` (from the scene towards the eye or light), about `centre`.
+template <geometry::number FT> class view_from_infinity {
+public:
+  using point = geometry::e3::point<FT>;
+  using plane = geometry::e3::hyperplane<FT>;
+
+  /// For the scene `polygons`.  Throws `std::invalid_argument` for a zero direction.
+  view_from_infinity(std::vector<polygon<FT>> const& polygons, std::array<FT, 3> toward, point centre = {})
+      : e_(std::move(toward)), c_(std::move(centre)) {
+    if (e_[0] == 0 && e_[1] == 0 && e_[2] == 0) throw std::invalid_argument("svm::view_from_infinity: the direction is zero");
+    FT m(0);
+    for (auto const& p : polygons)
+      for (auto const& q : p.vertices) {
+        FT v = along(q);
+        if (v < 0) v = -v;
+        if (m < v) m = v;
+      }
+    s_ = FT(2) * m + FT(1);
+  }
+
+  FT const& s() const noexcept { return s_; }
+  std::array<FT, 3> const& direction() const noexcept { return e_; }
+  point const& centre() const noexcept { return c_; }
+
+  /// The finite point that the point at infinity becomes: c + s·e/(e·e).
+  point eye() const {
+    FT ee = e_[0] * e_[0] + e_[1] * e_[1] + e_[2] * e_[2];
+    return {c_.x() + s_ * e_[0] / ee, c_.y() + s_ * e_[1] / ee, c_.z() + s_ * e_[2] / ee};
+  }
+
+  /// The image of a point of the scene (which must satisfy s + e·(x − c) > 0).
+  point image(point const& x) const {
+    FT w = s_ + along(x);
+    if (!(w > 0)) throw std::invalid_argument("svm::view_from_infinity: a point beyond the plane sent to infinity");
+    return {c_.x() + s_ * (x.x() - c_.x()) / w, c_.y() + s_ * (x.y() - c_.y()) / w, c_.z() + s_ * (x.z() - c_.z()) / w};
+  }
+
+  /// The images of polygons, vertex by vertex (same faces).
+  std::vector<polygon<FT>> image(std::vector<polygon<FT>> const& polygons) const {
+    std::vector<polygon<FT>> out;
+    out.reserve(polygons.size());
+    for (auto const& p : polygons) {
+      std::vector<point> v;
+      v.reserve(p.vertices.size());
+      for (auto const& q : p.vertices) v.push_back(image(q));
+      out.push_back({std::move(v), p.face});
+    }
+    return out;
+  }
+
+  /// The plane of the scene whose image is `h` (same positive side).
+  plane preimage(plane const& h) const {
+    auto const& n = h.n;
+    // (a, b) about the centre: b = d + a·c.
+    FT b = n[3] + n[0] * c_.x() + n[1] * c_.y() + n[2] * c_.z();
+    std::array<FT, 3> a{s_ * n[0] + b * e_[0], s_ * n[1] + b * e_[1], s_ * n[2] + b * e_[2]};
+    FT d = s_ * b - (a[0] * c_.x() + a[1] * c_.y() + a[2] * c_.z());
+    return plane(geometry::hvec<FT, 4>(std::array<FT, 4>{a[0], a[1], a[2], d}), h.tag);
+  }
+
+  /// The image of a plane of the scene (same positive side).
+  plane image(plane const& h) const {
+    auto const& n = h.n;
+    FT b = n[3] + n[0] * c_.x() + n[1] * c_.y() + n[2] * c_.z();
+    std::array<FT, 3> a{s_ * n[0] - b * e_[0], s_ * n[1] - b * e_[1], s_ * n[2] - b * e_[2]};
+    FT d = s_ * b - (a[0] * c_.x() + a[1] * c_.y() + a[2] * c_.z());
+    return plane(geometry::hvec<FT, 4>(std::array<FT, 4>{a[0], a[1], a[2], d}), h.tag);
+  }
+
+  /// The convex polygon of the scene whose image is `s`, or the image of a
+  /// polygon of the scene (`forward`): its plane cut by its bounds' planes.
+  geometry::e3::sub_hyperplane<FT> carry(geometry::e3::sub_hyperplane<FT> const& piece, bool forward) const {
+    auto map = [&](plane const& h) { return forward ? image(h) : preimage(h); };
+    std::optional<geometry::e3::sub_hyperplane<FT>> r = geometry::e3::whole_plane(map(piece.support));
+    for (auto const& b : piece.bounds) {
+      r = geometry::e3::split(*r, map(b.original)).positive;
+      if (!r) throw std::logic_error("svm::view_from_infinity: a polygon vanished in the map");
+    }
+    return std::move(*r);
+  }
+
+private:
+  FT along(point const& x) const { return e_[0] * (x.x() - c_.x()) + e_[1] * (x.y() - c_.y()) + e_[2] * (x.z() - c_.z()); }
+
+  std::array<FT, 3> e_;
+  point c_;
+  FT s_{1};
+};
+
+/// The perspective camera at `view.eye()` that draws the parallel view along
+/// −e: `extent` scene units wide on the plane through the centre, the
+/// image's vertical from `up`.  With `svm::projection::perspective`; the
+/// map to draw is that of the scene's image from `view.eye()`.
+template <geometry::number FT> camera parallel_camera(view_from_infinity<FT> const& view, vec3 up, double extent, int width, int height) {
+  auto const& e = view.direction();
+  auto d = [](FT const& x) {
+    if constexpr (std::is_same_v<FT, double>) return x;
+    else return x.template convert_to<double>();
+  };
+  camera c;
+  c.forward = {-d(e[0]), -d(e[1]), -d(e[2])};
+  c.up = up;
+  c.width = width;
+  c.height = height;
+  // The plane through the centre is fixed by the map, at distance s/|e| from the eye.
+  double distance = d(view.s()) / std::sqrt(d(e[0]) * d(e[0]) + d(e[1]) * d(e[1]) + d(e[2]) * d(e[2]));
+  if (!(extent > 0)) throw std::invalid_argument("svm::parallel_camera: the extent must be positive");
+  c.hfov = 2 * std::atan(extent / 2 / distance) * 180 / std::numbers::pi;
+  return c;
+}
+
+} // namespace svm
