@@ -147,6 +147,9 @@ check "render: no file after an error" test ! -e "$work/x.svg"
 check "render orthographic: faces 0, 2, 4 and 6" test "$(grep -o 'data-face="[0-9]*"' "$work/ortho.svg" | sort -u | tr '\n' ' ')" = 'data-face="0" data-face="2" data-face="4" data-face="6" '
 "$genbsp" render "$work/scene.off" --projection orthographic --dir 0,0,1 --extent 2 --light 0,0,0 --shadows -o "$work/ortho.pdf"
 check "render orthographic with shadows: PDF" grep -q '^%PDF-' "$work/ortho.pdf"
+"$genbsp" render "$work/scene.off" --view bottom --style id --size 200x150 -o "$work/bottom.svg"
+check "render --view bottom: the cube's bottom (0) and the square around it (6)" test "$(grep -o 'data-face="[0-9]*"' "$work/bottom.svg" | sort -u | tr '\n' ' ')" = 'data-face="0" data-face="6" '
+expect_error "render --view with --dir" "--view" "$genbsp" render "$work/scene.off" --view front --dir 1,0,0 -o "$work/x.svg"
 expect_error "render orthographic: no direction" "--dir" "$genbsp" render "$work/scene.off" --projection orthographic -o "$work/x.svg"
 expect_error "render: --eye is needed in perspective" "--eye" "$genbsp" render "$work/scene.off" -o "$work/x.svg"
 expect_error "render: --extent is orthographic" "--extent" "$genbsp" render "$work/scene.off" --eye 0,0,0 --extent 3 -o "$work/x.svg"

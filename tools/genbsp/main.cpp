@@ -27,6 +27,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <sstream>
 #include <string>
 
@@ -527,6 +528,11 @@ int run(int argc, char** argv) {
                      "or orthographic (a parallel view along --dir, exact: no --eye)")
       ->check(CLI::IsMember({"perspective", "stereographic", "fisheye", "fisheye-equidistant", "fisheye-equisolid", "equirectangular", "cube", "orthographic"}));
   render->add_option("--extent", extent_text, "orthographic: the width of the scene shown, in its units (default: the scene fits)");
+  std::string named_view;
+  render->add_option("--view", named_view,
+                     "a named parallel view (orthographic): front (along +y), back (-y), left (+x), right (-x), top (along -z, up +y), "
+                     "bottom (+z, up -y) or iso (along -1,1,-1); up +z unless said")
+      ->check(CLI::IsMember({"front", "back", "left", "right", "top", "bottom", "iso"}));
   render->add_option("--style", style_name, "shaded (default), flat, lines or id")->check(CLI::IsMember({"shaded", "flat", "lines", "id"}));
   render->add_option("--light", render_lights, "a point light at X,Y,Z (read exactly; repeat for more, up to 64; default: a head light at the eye)");
   render->add_option("--sun", render_suns, "a light at infinity: the direction towards it, DX,DY,DZ (repeatable)");
@@ -664,6 +670,16 @@ int run(int argc, char** argv) {
     if (ext != ".svg" && ext != ".pdf" && ext != ".eps" && ext != ".png")
       throw usage_error(render_out + ": unknown output format '" + ext + "' (use .svg, .pdf, .eps or .png)");
     if (!look_text.empty() && !dir_text.empty()) throw usage_error("--look and --dir: give one of them");
+    if (!named_view.empty()) {
+      if (render->count("--projection") && projection_name != "orthographic") throw usage_error("--view is an orthographic view; leave out --projection");
+      if (!dir_text.empty() || (!look_text.empty() && !rj.eye_text.empty())) throw usage_error("--view gives the direction; leave out --dir");
+      static std::map<std::string, std::pair<char const*, char const*>> const named{
+          {"front", {"0,1,0", "0,0,1"}}, {"back", {"0,-1,0", "0,0,1"}}, {"left", {"1,0,0", "0,0,1"}}, {"right", {"-1,0,0", "0,0,1"}},
+          {"top", {"0,0,-1", "0,1,0"}},  {"bottom", {"0,0,1", "0,-1,0"}}, {"iso", {"-1,1,-1", "0,0,1"}}};
+      projection_name = "orthographic";
+      dir_text = named.at(named_view).first;
+      if (up_text.empty()) up_text = named.at(named_view).second;
+    }
     bool equirect = projection_name == "equirectangular", cube = projection_name == "cube";
     int w = equirect ? 1600 : 800, h = equirect ? 800 : 600;
     if (cube) w = h = 512;
