@@ -40,17 +40,22 @@ public:
   using point = geometry::e3::point<FT>;
   using plane = geometry::e3::hyperplane<FT>;
 
-  /// For the scene `polygons`.  Throws `std::invalid_argument` for a zero direction.
-  view_from_infinity(std::vector<polygon<FT>> const& polygons, std::array<FT, 3> toward, point centre = {})
+  /// For the scene `polygons`, and the points `also` (which must keep
+  /// s + e·(x − c) > 0 too: points to be located, say).  Throws
+  /// `std::invalid_argument` for a zero direction.
+  view_from_infinity(std::vector<polygon<FT>> const& polygons, std::array<FT, 3> toward, point centre = {},
+                     std::vector<point> const& also = {})
       : e_(std::move(toward)), c_(std::move(centre)) {
     if (e_[0] == 0 && e_[1] == 0 && e_[2] == 0) throw std::invalid_argument("svm::view_from_infinity: the direction is zero");
     FT m(0);
+    auto widen = [&](point const& q) {
+      FT v = along(q);
+      if (v < 0) v = -v;
+      if (m < v) m = v;
+    };
     for (auto const& p : polygons)
-      for (auto const& q : p.vertices) {
-        FT v = along(q);
-        if (v < 0) v = -v;
-        if (m < v) m = v;
-      }
+      for (auto const& q : p.vertices) widen(q);
+    for (auto const& q : also) widen(q);
     s_ = FT(2) * m + FT(1);
   }
 
@@ -69,6 +74,13 @@ public:
     FT w = s_ + along(x);
     if (!(w > 0)) throw std::invalid_argument("svm::view_from_infinity: a point beyond the plane sent to infinity");
     return {c_.x() + s_ * (x.x() - c_.x()) / w, c_.y() + s_ * (x.y() - c_.y()) / w, c_.z() + s_ * (x.z() - c_.z()) / w};
+  }
+
+  /// The direction from `eye()` in which the map shows the line through `x`
+  /// parallel to the view (x must satisfy s + e·(x − c) > 0).
+  geometry::s2::point<FT> direction_of(point const& x) const {
+    point y = image(x), o = eye();
+    return geometry::s2::point<FT>(std::array<FT, 3>{y.x() - o.x(), y.y() - o.y(), y.z() - o.z()});
   }
 
   /// The images of polygons, vertex by vertex (same faces).

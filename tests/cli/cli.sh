@@ -141,6 +141,16 @@ expect_error "render: up along the view" "up vector" "$genbsp" render "$work/sce
 expect_error "render: bad projection" "try --help" "$genbsp" render "$work/scene.off" --eye 0,0,0 --projection mercator -o "$work/x.svg"
 check "render: no file after an error" test ! -e "$work/x.svg"
 
+# locate --view-dir: lines parallel to z through the cube (its face 0 at z =
+# 2), beside it (the square, 6) and beyond the square (nothing).
+printf '0 0 0\n3 3 -100\n10 10 1\n0.1 0.2 50\n' >"$work/points"
+"$genbsp" locate "$work/scene.off" --view-dir 0,0,1 --dirs "$work/points" >"$work/located-parallel"
+check "locate --view-dir: faces along parallel lines" test "$(tr '\n' ' ' <"$work/located-parallel")" = "0 6 -1 0 "
+"$genbsp" stats "$work/scene.off" --view-dir 1,1,3 >"$work/stats-parallel.json"
+check "stats --view-dir: a map" python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); sys.exit(not (d["polygons"] == 7 and d["map"]["faces"] >= 5))' "$work/stats-parallel.json"
+expect_error "locate: --eye and --view-dir" "--view-dir" "$genbsp" locate "$work/scene.off" --eye 0,0,0 --view-dir 0,0,1 --dirs "$work/points"
+expect_error "stats: neither --eye nor --view-dir" "--view-dir" "$genbsp" stats "$work/scene.off"
+
 # render orthographic: looking along (1,1,3) from the point at infinity, the
 # cube's faces facing -x, -y and -z (2, 4, 0) and the square (6).
 "$genbsp" render "$work/scene.off" --projection orthographic --dir 1,1,3 --style id --size 200x150 -o "$work/ortho.svg"

@@ -9,6 +9,7 @@
 #include <svm/camera.hpp>
 #include <svm/query.hpp>
 #include <svm/graph.hpp>
+#include <svm/parallel.hpp>
 #include <svm/scenes.hpp>
 
 #include <cmath>
@@ -246,6 +247,47 @@ TEST_CASE("the visibility map agrees with an exact ray caster", "[svm]") {
             << skipped << " skipped (on an edge or a tie)\n";
   CHECK(scenes >= 200);
   CHECK(compared > 150000);
+}
+
+TEST_CASE("parallel views agree with an exact parallel ray caster", "[svm][parallel]") {
+  // The map of the scene's image from the finite eye of view_from_infinity
+  // (svm/parallel.hpp), located along lines parallel to the view, against
+  // the exact ray caster started far behind on each line.
+  long compared = 0, skipped = 0;
+  int scenes = 0;
+  for (int t = 0; t < 102; ++t) {
+    int family = t % 6;
+    auto sc = make_scene(family);
+    if (sc.tris.empty()) continue;
+    ++scenes;
+    INFO("scene " << t << ", family " << family);
+    ivec d = rp(5);
+    if (d == ivec{0, 0, 0}) d = {1, 2, 3};
+    if (t % 5 == 0) d = {0, 0, t % 2 ? 1 : -1}; // along an axis: faces edge-on, vertices in line
+    std::vector<ivec> points;
+    for (int r = 0; r < 300; ++r) points.push_back(rp(16));
+    std::vector<e3::point<Q>> also;
+    for (auto const& p : points) also.emplace_back(Q(p[0]), Q(p[1]), Q(p[2]));
+    auto polys = polygons_of(sc.tris);
+    svm::view_from_infinity<Q> view(polys, {Q(-d[0]), Q(-d[1]), Q(-d[2])}, e3::point<Q>(Q(1, 3), Q(-1, 7), Q(1, 5)), also);
+    auto vm = svm::build<Q>(view.image(polys), view.eye());
+    check_map(vm, true);
+    for (std::size_t r = 0; r < points.size(); ++r) {
+      auto const& p = points[r];
+      ivec o{p[0] - 1000 * d[0], p[1] - 1000 * d[1], p[2] - 1000 * d[2]};
+      long truth = cast(sc.tris, o, d);
+      if (truth == ambiguous) {
+        ++skipped;
+        continue;
+      }
+      ++compared;
+      CHECK(svm::locate(vm, view.direction_of(also[r])) == truth);
+    }
+  }
+  std::cout << "parallel views: " << scenes << " scenes, " << compared << " lines compared with the ray caster, " << skipped
+            << " skipped (on an edge or a tie)\n";
+  CHECK(scenes >= 100);
+  CHECK(compared > 20000);
 }
 
 TEST_CASE("the coverage tree and the map's locator answer as the paper's tree V does", "[svm][locate]") {

@@ -190,6 +190,34 @@ svm::visibility_map<rational> orthographic_map(map_job const& job, svm::view_fro
   return svm::build<rational>(scene.pieces, view.eye(), o);
 }
 
+/// The parallel view along `dir_text` (exact), about the centre of the
+/// scene's bounding box, keeping `also` on the scene's side.
+svm::view_from_infinity<rational> parallel_view(loaded const& l, std::vector<svm::polygon<rational>> const& polys, std::string const& dir_text,
+                                                std::vector<geometry::e3::point<rational>> const& also) {
+  auto d = parse_point(dir_text, "--view-dir");
+  if (d.x() == 0 && d.y() == 0 && d.z() == 0) throw usage_error("--view-dir: the zero vector is no direction");
+  std::array<rational, 3> lo{}, hi{};
+  bool first = true;
+  for (auto const& p : l.prepared.polygons)
+    for (auto const& q : p.vertices) {
+      for (int k = 0; k < 3; ++k) {
+        if (first || q[k] < lo[k]) lo[k] = q[k];
+        if (first || q[k] > hi[k]) hi[k] = q[k];
+      }
+      first = false;
+    }
+  geometry::e3::point<rational> centre((lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2);
+  return svm::view_from_infinity<rational>(polys, {-d.x(), -d.y(), -d.z()}, centre, also);
+}
+
+svm::build_options parallel_options(map_job const& job) {
+  if (job.number != "exact") throw usage_error("--view-dir: exact arithmetic only, for now");
+  svm::build_options o;
+  o.simplify = !job.no_simplify;
+  o.cull_backfaces = job.cull;
+  return o;
+}
+
 json size_json(svm::map_size const& s) { return {{"vertices", s.vertices}, {"edges", s.edges}, {"faces", s.faces}}; }
 
 template <class FT> json stats_json(svm::visibility_map<FT> const& vm, loaded const& l) {
@@ -498,12 +526,18 @@ int run(int argc, char** argv) {
   map_job lj;
   std::string dirs;
   auto* locate = app.add_subcommand("locate", "the input face visible in each direction (one 'dx dy dz' per line) or -1");
-  lj.add_options(*locate);
+  lj.add_options(*locate, false);
+  std::string locate_view_dir;
+  locate->add_option("--view-dir", locate_view_dir,
+                     "or a parallel view along DX,DY,DZ (no --eye): each line of --dirs is then a point 'x y z', and the answer is the "
+                     "face seen along the line through it");
   locate->add_option("--dirs", dirs, "file of directions, - for standard input")->required();
 
   map_job sj;
   auto* stats = app.add_subcommand("stats", "sizes and times of a map, as one JSON object");
-  sj.add_options(*stats);
+  sj.add_options(*stats, false);
+  std::string stats_view_dir;
+  stats->add_option("--view-dir", stats_view_dir, "or the map of a parallel view along DX,DY,DZ (no --eye; exact)");
   std::vector<std::string> stats_lights, stats_suns;
   stats->add_option("--light", stats_lights, "the map of the scene's lit and shadowed pieces from these point lights (repeatable)");
   stats->add_option("--sun", stats_suns, "and from these lights at infinity, DX,DY,DZ towards each (repeatable)");
@@ -602,6 +636,14 @@ int run(int argc, char** argv) {
     write_file(map_out, text);
   } else if (*stats) {
     auto l = load(sj);
+    if (sj.eye_text.empty() == stats_view_dir.empty()) throw usage_error("stats: give --eye X,Y,Z or --view-dir DX,DY,DZ");
+    if (!stats_view_dir.empty()) {
+      if (!stats_lights.empty() || !stats_suns.empty()) throw usage_error("--view-dir: no lights yet (render --projection orthographic has them)");
+      auto polys = polygons_in<rational>(l);
+      auto view = parallel_view(l, polys, stats_view_dir, {});
+      std::cout << stats_json(svm::build<rational>(view.image(polys), view.eye(), parallel_options(sj)), l).dump() << "\n";
+      return 0;
+    }
     shadow_job shadows;
     svm::shadow_statistics sst;
     std::vector<svm::lit_region> regions;
@@ -646,8 +688,21 @@ int run(int argc, char** argv) {
         } catch (geometry::parse_error const& e) {
           throw usage_error(name + ":" + std::to_string(number) + ": " + e.what());
         }
-      if (d[0] == 0 && d[1] == 0 && d[2] == 0) throw usage_error(name + ":" + std::to_string(number) + ": the zero vector is no direction");
+      if (locate_view_dir.empty() && d[0] == 0 && d[1] == 0 && d[2] == 0)
+        throw usage_error(name + ":" + std::to_string(number) + ": the zero vector is no direction");
       ds.push_back(d);
+    }
+    if (lj.eye_text.empty() == locate_view_dir.empty()) throw usage_error("locate: give --eye X,Y,Z or --view-dir DX,DY,DZ");
+    if (!locate_view_dir.empty()) {
+      auto polys = polygons_in<rational>(l);
+      std::vector<geometry::e3::point<rational>> points;
+      for (auto const& d : ds) points.emplace_back(d[0], d[1], d[2]);
+      auto view = parallel_view(l, polys, locate_view_dir, points);
+      auto vm = svm::build<rational>(view.image(polys), view.eye(), parallel_options(lj));
+      std::string out;
+      for (auto const& p : points) out += std::to_string(svm::locate(vm, view.direction_of(p))) + "\n";
+      std::cout << out;
+      return 0;
     }
     std::cout << with_map(lj, l, [&](auto const& vm) {
       using FT = typename std::remove_cvref_t<decltype(vm)>::number_type;
