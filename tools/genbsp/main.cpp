@@ -30,6 +30,7 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <tuple>
 
 namespace {
 
@@ -190,22 +191,30 @@ svm::visibility_map<rational> orthographic_map(map_job const& job, svm::view_fro
   return svm::build<rational>(scene.pieces, view.eye(), o);
 }
 
+/// The scene's bounding box, exactly: its lowest and highest coordinates,
+/// and whether it has a vertex at all.
+std::tuple<std::array<rational, 3>, std::array<rational, 3>, bool> exact_box(loaded const& l) {
+  std::array<rational, 3> lo{}, hi{};
+  bool any = false;
+  for (auto const& p : l.prepared.polygons)
+    for (auto const& q : p.vertices) {
+      for (int k = 0; k < 3; ++k) {
+        if (!any || q[k] < lo[k]) lo[k] = q[k];
+        if (!any || q[k] > hi[k]) hi[k] = q[k];
+      }
+      any = true;
+    }
+  return {lo, hi, any};
+}
+
 /// The parallel view along `dir_text` (exact), about the centre of the
 /// scene's bounding box, keeping `also` on the scene's side.
 svm::view_from_infinity<rational> parallel_view(loaded const& l, std::vector<svm::polygon<rational>> const& polys, std::string const& dir_text,
                                                 std::vector<geometry::e3::point<rational>> const& also) {
   auto d = parse_point(dir_text, "--view-dir");
   if (d.x() == 0 && d.y() == 0 && d.z() == 0) throw usage_error("--view-dir: the zero vector is no direction");
-  std::array<rational, 3> lo{}, hi{};
-  bool first = true;
-  for (auto const& p : l.prepared.polygons)
-    for (auto const& q : p.vertices) {
-      for (int k = 0; k < 3; ++k) {
-        if (first || q[k] < lo[k]) lo[k] = q[k];
-        if (first || q[k] > hi[k]) hi[k] = q[k];
-      }
-      first = false;
-    }
+  auto [lo, hi, any] = exact_box(l);
+  if (!any) throw usage_error("--view-dir: the scene has no faces");
   geometry::e3::point<rational> centre((lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2);
   return svm::view_from_infinity<rational>(polys, {-d.x(), -d.y(), -d.z()}, centre, also);
 }
@@ -766,16 +775,7 @@ int run(int argc, char** argv) {
     if (!ortho && !extent_text.empty()) throw usage_error("--extent is for --projection orthographic");
     if (ortho && !shift_text.empty()) throw usage_error("--shift is for perspective views");
     if (ortho && rj.number != "exact") throw usage_error("--projection orthographic: exact arithmetic only, for now");
-    // The scene's bounding box, exactly.
-    std::array<rational, 3> lo_q, hi_q;
-    bool any = false;
-    for (auto const& p : l.prepared.polygons)
-      for (auto const& q : p.vertices)
-        for (int k = 0; k < 3; ++k) {
-          if (!any || q[k] < lo_q[k]) lo_q[k] = q[k];
-          if (!any || q[k] > hi_q[k]) hi_q[k] = q[k];
-          any = any || k == 2;
-        }
+    auto [lo_q, hi_q, any] = exact_box(l);
     if (ortho && !any) throw usage_error(rj.scene_path + ": an orthographic view needs a scene with faces");
     std::optional<svm::view_from_infinity<rational>> parallel;
     std::vector<svm::polygon<rational>> image_polygons;
