@@ -172,6 +172,14 @@ template <geometry::number FT> provenance provenance_of(geometry::s2::hyperplane
   return (c.tag != geometry::no_tag && (c.tag & edge_tag_bit) != 0) ? provenance::scene_edge : provenance::depth_split;
 }
 
+/// Input polygon `p` as the build takes it: its plane cut by its edge planes,
+/// each tagged as a scene edge of its face.
+template <geometry::number FT> geometry::e3::sub_hyperplane<FT> scene_polygon(polygon<FT> const& p) {
+  auto s = geometry::e3::convex_polygon<FT>(p.vertices, p.face);
+  for (auto& b : s.bounds) b.original.tag = edge_tag_bit | p.face;
+  return s;
+}
+
 /// Whether circle `c` cuts the interior of face `f` of `m` (a face without edges is the whole sphere).
 template <geometry::number FT> bool cuts(dcel<FT> const& m, index f, geometry::s2::hyperplane<FT> const& c) {
   index e0 = m.faces()[f].edge;
@@ -672,12 +680,7 @@ visibility_map<FT> build_map(std::size_t count, Shape&& shape_of, Corners&& corn
 template <geometry::number FT>
 visibility_map<FT> build(std::vector<polygon<FT>> const& polygons, geometry::e3::point<FT> const& eye,
                          build_options const& options = {}) {
-  auto shape = [&](std::uint32_t i) {
-    auto const& p = polygons[i];
-    auto s = geometry::e3::convex_polygon<FT>(p.vertices, p.face);
-    for (auto& b : s.bounds) b.original.tag = detail::edge_tag_bit | p.face;
-    return s;
-  };
+  auto shape = [&](std::uint32_t i) { return detail::scene_polygon(polygons[i]); };
   auto corners = [&](std::uint32_t i) {
     std::vector<geometry::hvec<FT, 4>> out;
     for (auto const& q : polygons[i].vertices) out.push_back(q.homogeneous());

@@ -97,23 +97,10 @@ public:
   }
 
   /// The plane of the scene whose image is `h` (same positive side).
-  plane preimage(plane const& h) const {
-    auto const& n = h.n;
-    // (a, b) about the centre: b = d + a·c.
-    FT b = n[3] + n[0] * c_.x() + n[1] * c_.y() + n[2] * c_.z();
-    std::array<FT, 3> a{s_ * n[0] + b * e_[0], s_ * n[1] + b * e_[1], s_ * n[2] + b * e_[2]};
-    FT d = s_ * b - (a[0] * c_.x() + a[1] * c_.y() + a[2] * c_.z());
-    return plane(geometry::hvec<FT, 4>(std::array<FT, 4>{a[0], a[1], a[2], d}), h.tag);
-  }
+  plane preimage(plane const& h) const { return mapped(h, +1); }
 
   /// The image of a plane of the scene (same positive side).
-  plane image(plane const& h) const {
-    auto const& n = h.n;
-    FT b = n[3] + n[0] * c_.x() + n[1] * c_.y() + n[2] * c_.z();
-    std::array<FT, 3> a{s_ * n[0] - b * e_[0], s_ * n[1] - b * e_[1], s_ * n[2] - b * e_[2]};
-    FT d = s_ * b - (a[0] * c_.x() + a[1] * c_.y() + a[2] * c_.z());
-    return plane(geometry::hvec<FT, 4>(std::array<FT, 4>{a[0], a[1], a[2], d}), h.tag);
-  }
+  plane image(plane const& h) const { return mapped(h, -1); }
 
   /// The convex polygon of the scene whose image is `s`, or the image of a
   /// polygon of the scene (`forward`): its plane cut by its bounds' planes.
@@ -128,6 +115,17 @@ public:
   }
 
 private:
+  /// Plane (a, b) about the centre (a·(x − c) + b = 0) to (s·a + sign·b·e, s·b):
+  /// sign +1 from the image back to the scene, −1 from the scene to the image.
+  plane mapped(plane const& h, int sign) const {
+    auto const& n = h.n;
+    FT b = n[3] + n[0] * c_.x() + n[1] * c_.y() + n[2] * c_.z();
+    FT be = sign > 0 ? b : -b;
+    std::array<FT, 3> a{s_ * n[0] + be * e_[0], s_ * n[1] + be * e_[1], s_ * n[2] + be * e_[2]};
+    FT d = s_ * b - (a[0] * c_.x() + a[1] * c_.y() + a[2] * c_.z());
+    return plane(geometry::hvec<FT, 4>(std::array<FT, 4>{a[0], a[1], a[2], d}), h.tag);
+  }
+
   FT along(point const& x) const { return e_[0] * (x.x() - c_.x()) + e_[1] * (x.y() - c_.y()) + e_[2] * (x.z() - c_.z()); }
 
   std::array<FT, 3> e_;

@@ -207,11 +207,7 @@ light_split<FT> sun_pass(std::vector<polygon<FT>> const& polygons, std::vector<g
   view_from_infinity<FT> view(polygons, d);
   std::vector<geometry::e3::sub_hyperplane<FT>> image;
   image.reserve(polygons.size());
-  for (auto const& p : view.image(polygons)) {
-    auto shape = geometry::e3::convex_polygon<FT>(p.vertices, p.face);
-    for (auto& b : shape.bounds) b.original.tag = edge_tag_bit | p.face;
-    image.push_back(std::move(shape));
-  }
+  for (auto const& p : view.image(polygons)) image.push_back(scene_polygon(p));
   auto split = light_pass(image, view.eye(), options, make_dark, dark, st);
   for (std::size_t i = 0; i < split.size(); ++i)
     for (auto& part : split[i]) part.shape = part.whole ? shapes[i] : view.carry(part.shape, false);
@@ -269,14 +265,7 @@ shadows<FT> compute_shadows(std::vector<polygon<FT>> const& polygons, std::vecto
   st.lights = lights.size();
   std::vector<e3::sub_hyperplane<FT>> shapes;
   shapes.reserve(polygons.size());
-  for (auto const& p : polygons) {
-    auto s = e3::convex_polygon<FT>(p.vertices, p.face);
-    for (auto& b : s.bounds) b.original.tag = detail::edge_tag_bit | p.face;
-    shapes.push_back(std::move(s));
-  }
-  // Per polygon, its pieces so far and the lights that reach each.
-  std::vector<std::vector<std::pair<e3::sub_hyperplane<FT>, std::uint64_t>>> current(polygons.size());
-  for (std::size_t i = 0; i < shapes.size(); ++i) current[i].push_back({shapes[i], 0});
+  for (auto const& p : polygons) shapes.push_back(detail::scene_polygon(p));
   bool const make_dark = options.shadowed_pieces || lights.size() != 1;
   out.dark.assign(polygons.size(), lights.empty() ? 1 : 0);
   if (!make_dark) {
@@ -291,6 +280,9 @@ shadows<FT> compute_shadows(std::vector<polygon<FT>> const& polygons, std::vecto
     st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return out;
   }
+  // Per polygon, its pieces so far and the lights that reach each.
+  std::vector<std::vector<std::pair<e3::sub_hyperplane<FT>, std::uint64_t>>> current(polygons.size());
+  for (std::size_t i = 0; i < shapes.size(); ++i) current[i].push_back({shapes[i], 0});
   std::vector<char> ignored(polygons.size(), 0);
   for (std::size_t k = 0; k < lights.size(); ++k) {
     if (options.progress) options.progress(static_cast<double>(k) / static_cast<double>(lights.size()));
@@ -299,8 +291,8 @@ shadows<FT> compute_shadows(std::vector<polygon<FT>> const& polygons, std::vecto
     for (std::size_t i = 0; i < shapes.size(); ++i) {
       auto& cur = current[i];
       auto const& by = split[i];
-      if (by.size() == 1) {
-        // One piece: the polygon whole, lit or not.
+      if (by.size() == 1 && by[0].whole) {
+        // The polygon whole, lit or not.
         if (by[0].lit)
           for (auto& c : cur) c.second |= bit;
         continue;
@@ -365,11 +357,7 @@ template <geometry::number FT> shadowed_scene<FT> label_regions(shadows<FT> cons
     std::uint32_t face = polygons[i].face;
     for (; at < sh.pieces.size() && sh.pieces[at].polygon == i; ++at)
       if (sh.pieces[at].lights != 0) out.pieces.push_back({sh.pieces[at].shape, label(face, sh.pieces[at].lights)});
-    if (sh.dark[i]) {
-      auto whole = geometry::e3::convex_polygon<FT>(polygons[i].vertices, face);
-      for (auto& b : whole.bounds) b.original.tag = detail::edge_tag_bit | face;
-      out.pieces.push_back({std::move(whole), label(face, 0)});
-    }
+    if (sh.dark[i]) out.pieces.push_back({detail::scene_polygon(polygons[i]), label(face, 0)});
   }
   return out;
 }

@@ -130,17 +130,24 @@ struct shadow_job {
   svm::shadow_statistics* stats = nullptr;
 };
 
+/// The lit pieces of `polygons` and each polygon with a shadow, labelled by
+/// region (`svm::label_regions`); the regions and statistics go to `shadows`.
+template <class FT>
+std::vector<svm::convex_piece<FT>> shadowed_pieces(std::vector<svm::polygon<FT>> const& polygons, shadow_job const& shadows,
+                                                   std::uint64_t seed) {
+  auto sh = svm::compute_shadows<FT>(polygons, lights_in<FT>(shadows.lights), {.seed = seed, .shadowed_pieces = false});
+  if (shadows.stats) *shadows.stats = sh.stats;
+  auto scene = svm::label_regions(sh, polygons);
+  if (shadows.regions) *shadows.regions = std::move(scene.regions);
+  return std::move(scene.pieces);
+}
+
 /// The map of `polygons` from `eye`, or of their shadow pieces.
 template <class FT>
 svm::visibility_map<FT> map_of(std::vector<svm::polygon<FT>> const& polygons, geometry::e3::point<FT> const& eye, svm::build_options const& o,
                                shadow_job const& shadows) {
   if (shadows.lights.empty()) return svm::build<FT>(polygons, eye, o);
-  auto lights = lights_in<FT>(shadows.lights);
-  auto sh = svm::compute_shadows<FT>(polygons, lights, {.seed = o.seed, .shadowed_pieces = false});
-  if (shadows.stats) *shadows.stats = sh.stats;
-  auto scene = svm::label_regions(sh, polygons);
-  if (shadows.regions) *shadows.regions = std::move(scene.regions);
-  return svm::build<FT>(scene.pieces, eye, o);
+  return svm::build<FT>(shadowed_pieces(polygons, shadows, o.seed), eye, o);
 }
 
 /// The map in either number type, then a function of it.
@@ -182,13 +189,9 @@ svm::visibility_map<rational> orthographic_map(map_job const& job, svm::view_fro
   o.simplify = !job.no_simplify;
   o.cull_backfaces = job.cull;
   if (shadows.lights.empty()) return svm::build<rational>(image, view.eye(), o);
-  auto polygons = polygons_in<rational>(l);
-  auto sh = svm::compute_shadows<rational>(polygons, shadows.lights, {.seed = o.seed, .shadowed_pieces = false});
-  if (shadows.stats) *shadows.stats = sh.stats;
-  auto scene = svm::label_regions(sh, polygons);
-  for (auto& p : scene.pieces) p.shape = view.carry(p.shape, true);
-  if (shadows.regions) *shadows.regions = std::move(scene.regions);
-  return svm::build<rational>(scene.pieces, view.eye(), o);
+  auto pieces = shadowed_pieces(polygons_in<rational>(l), shadows, o.seed);
+  for (auto& p : pieces) p.shape = view.carry(p.shape, true);
+  return svm::build<rational>(pieces, view.eye(), o);
 }
 
 /// The scene's bounding box, exactly: its lowest and highest coordinates,
