@@ -125,18 +125,21 @@ namespace detail {
 /// The tag of an edge plane of polygon i (the high bit marks scene edges).
 inline constexpr geometry::hyperplane_tag edge_tag_bit = 0x80000000u;
 
-/// The circles of one build, each stored once where it stays put (a deque
-/// never moves its elements): fragments and their pieces refer to them.
-template <geometry::number FT> using circle_store = std::deque<geometry::s2::hyperplane<FT>>;
+/// The hyperplanes of one build (circles on S2, point pairs on S1), each
+/// stored once where it stays put (a deque never moves its elements):
+/// fragments and their pieces refer to them.
+template <class Hyperplane> using hyperplane_store = std::deque<Hyperplane>;
+template <geometry::number FT> using circle_store = hyperplane_store<geometry::s2::hyperplane<FT>>;
 
-/// A bound of a fragment on the sphere: its circle, in a `circle_store`, and
-/// the paper's flag — true while the edge may still add a node to V.
-/// Splitting a fragment copies these, never a number.
-template <geometry::number FT> struct sphere_bound {
-  geometry::s2::hyperplane<FT> const* c;
+/// A bound of a fragment in the target geometry: its hyperplane, in a
+/// `hyperplane_store`, and the paper's flag — true while the edge may still
+/// add a node to V.  Splitting a fragment copies these, never a number.
+template <class Hyperplane> struct flagged_bound {
+  Hyperplane const* c;
   bool flag = true;
-  geometry::hvec<FT, 3> const& line() const noexcept { return c->n; }
+  auto const& line() const noexcept { return c->n; }
 };
+template <geometry::number FT> using sphere_bound = flagged_bound<geometry::s2::hyperplane<FT>>;
 
 /// The fragment of an E3 polygon as seen from the eye: each bound B of the
 /// polygon (in the plane P) becomes the circle of the plane through the eye
@@ -214,13 +217,13 @@ template <geometry::number FT> void cut_everywhere(dcel<FT>& m, coverage<FT>& v,
   }
 }
 
-/// The circles of a tree's nodes, each with its opposite, stored once where
-/// they stay put; `of[i]` for interior node i.  Fragments split at a node
-/// take their new bounds from here.
-template <geometry::number FT> struct node_circles {
-  circle_store<FT> store;
-  std::vector<std::array<geometry::s2::hyperplane<FT> const*, 2>> of;
-  void keep(bsp::node_id node, geometry::s2::hyperplane<FT> const& c) {
+/// The hyperplanes of a tree's nodes, each with its opposite, stored once
+/// where they stay put; `of[i]` for interior node i.  Fragments split at a
+/// node take their new bounds from here.
+template <class Hyperplane> struct node_hyperplanes {
+  hyperplane_store<Hyperplane> store;
+  std::vector<std::array<Hyperplane const*, 2>> of;
+  void keep(bsp::node_id node, Hyperplane const& c) {
     if (of.size() <= node.index()) of.resize(node.index() + 1);
     auto const* pos = &store.emplace_back(c);
     of[node.index()] = {pos, &store.emplace_back(c.opposite())};
@@ -233,6 +236,8 @@ template <geometry::number FT> struct node_circles {
     for (std::uint32_t i = 0; i < t.interior_count(); ++i) keep(bsp::node_id::interior(i), t.splitter(bsp::node_id::interior(i)));
   }
 };
+
+template <geometry::number FT> using node_circles = node_hyperplanes<geometry::s2::hyperplane<FT>>;
 
 /// A fragment at a node whose circle is `g[0]` (`g[1]` its opposite): split
 /// when the circle crosses it, else passed on whole, and then an edge lying
@@ -327,13 +332,24 @@ template <geometry::number FT> void prepare(dcel<FT>& m, coverage<FT>& v, build_
 /// stays complex it shrinks the tree little.  After a rebuild that more than
 /// halved it (free space cut up by earlier pieces, as on Platforms), it is
 /// rebuilt when it has doubled.
-template <geometry::number FT> class coverage_pass {
+///
+/// The pass is written once for every target geometry `K` of a view: the
+/// sphere S2 (central views, and parallel views through
+/// `svm::view_from_infinity`) and the circle S1 (2D visibility).  A
+/// fragment is a list of `flagged_bound`s; `route(fragment, node's
+/// hyperplanes, signs)` and `proper_edge(fragment, i)`, found by
+/// argument-dependent lookup, are the target's own.
+template <class K> class coverage_pass {
 public:
-  using fragment = std::vector<sphere_bound<FT>>;
+  using hyperplane = typename K::hyperplane;
+  using fragment = std::vector<flagged_bound<hyperplane>>;
+  using tree_type = bsp::coverage_tree<K, index>;
 
-  explicit coverage_pass(build_options const& o) : seed_(o.seed) {
-    dcel<FT> scratch;
-    prepare(scratch, cover_, o);
+  /// A tree with one free leaf; `init(tree)` may cut it and cover cells
+  /// first (a window, say) before any fragment comes.
+  template <class Init = void (*)(tree_type&)>
+  explicit coverage_pass(std::uint64_t seed, Init&& init = [](tree_type&) {}) : seed_(seed) {
+    init(cover_);
     circles_.refresh(cover_.as_tree());
     limit_ = std::max(least_rebuild, growth_ * cover_.interior_nodes());
   }
@@ -344,7 +360,7 @@ public:
   /// covered space.  Pieces' circles are `frag`'s and the tree's, which last
   /// until the next `rebuild_if_grown`.  Returns the number of hidden parts.
   template <class Visible, class Hidden> std::size_t insert(fragment frag, Visible&& visible, Hidden&& hidden) {
-    auto visit = [&](fragment&& piece, bsp::node_id leaf, typename coverage<FT>::place at) {
+    auto visit = [&](fragment&& piece, bsp::node_id leaf, typename tree_type::place at) {
       cover_cell(piece, leaf, at);
       visible(std::move(piece));
     };
@@ -359,7 +375,37 @@ public:
   template <class Part> std::size_t insert_merged(fragment frag, Part&& part) {
     return cover_.insert_merged(
         std::move(frag), [&](fragment& p, bsp::node_id n) { return route(p, circles_.of[n.index()], signs_); },
-        [&](fragment&& piece, bsp::node_id leaf, typename coverage<FT>::place at) { cover_cell(std::move(piece), leaf, at); }, part);
+        [&](fragment&& piece, bsp::node_id leaf, typename tree_type::place at) { cover_cell(std::move(piece), leaf, at); }, part);
+  }
+
+  /// Whether every part of `frag` would reach covered space (nothing of it
+  /// is visible); the tree is left as it is.
+  bool hidden(fragment frag) {
+    std::vector<std::pair<bsp::node_id, fragment>> stack;
+    stack.emplace_back(cover_.root(), std::move(frag));
+    auto const& t = cover_.as_tree();
+    while (!stack.empty()) {
+      auto [n, p] = std::move(stack.back());
+      stack.pop_back();
+      if (t.is_leaf(n)) {
+        if (!cover_.is_covered(n)) return false;
+        continue;
+      }
+      auto r = route(p, circles_.of[n.index()], signs_);
+      if (r.side != 0) {
+        stack.emplace_back(t.child(n, r.side), std::move(p));
+        continue;
+      }
+      if (r.negative) stack.emplace_back(t.negative(n), std::move(*r.negative));
+      if (r.positive) stack.emplace_back(t.positive(n), std::move(*r.positive));
+    }
+    return true;
+  }
+
+  /// Whether the whole target is covered: nothing more can be visible.
+  bool all_covered() const {
+    auto r = cover_.root();
+    return cover_.as_tree().is_leaf(r) && cover_.is_covered(r);
   }
 
   /// Rebuilds the tree when it has grown past its limit; whether it did.
@@ -382,7 +428,7 @@ private:
   /// The visible `piece` in the free leaf `leaf` hanging at `at`: its
   /// flagged edges of positive length (not lying in a circle of the path:
   /// `proper_edge`) cut the cell, and the cell inside is covered.
-  void cover_cell(fragment const& piece, bsp::node_id leaf, typename coverage<FT>::place at) {
+  void cover_cell(fragment const& piece, bsp::node_id leaf, typename tree_type::place at) {
     for (std::size_t i = 0; i < piece.size(); ++i) {
       auto const& b = piece[i];
       if (!b.flag || !proper_edge(piece, i)) continue;
@@ -395,12 +441,22 @@ private:
   }
 
   static constexpr std::size_t least_rebuild = 256;
-  coverage<FT> cover_{index{0}, true};
-  node_circles<FT> circles_;
+  tree_type cover_{index{0}, true};
+  node_hyperplanes<hyperplane> circles_;
   std::vector<geometry::sign> signs_;
   std::uint64_t seed_;
   std::size_t growth_ = 4, limit_ = 0, rebuilds_ = 0;
 };
+
+/// The visibility pass of a central view on the sphere, with the window,
+/// exclusion and free cuts of `o` in its tree from the start.
+template <geometry::number FT> using sphere_pass = coverage_pass<geometry::s2::kernel<FT>>;
+template <geometry::number FT> sphere_pass<FT> make_sphere_pass(build_options const& o) {
+  return sphere_pass<FT>(o.seed, [&o](coverage<FT>& tree) {
+    dcel<FT> scratch;
+    prepare(scratch, tree, o);
+  });
+}
 
 /// The arc of the map's half-edge `e` (even: it runs about its table
 /// circle), bounded by circles through its endpoints taken from the
@@ -584,7 +640,7 @@ visibility_map<FT> build_map(std::size_t count, Shape&& shape_of, Corners&& corn
     st.locator_nodes = st.v_nodes;
   } else {
     // Pass 1: what is visible (`coverage_pass`).
-    coverage_pass<FT> pass(options);
+    auto pass = make_sphere_pass<FT>(options);
     // The circles of visible pieces, for both passes; a fragment's circles
     // are made in `scratch` and moved here only when some piece of it is
     // visible, so that hidden fragments leave nothing behind.
@@ -633,7 +689,7 @@ visibility_map<FT> build_map(std::size_t count, Shape&& shape_of, Corners&& corn
     st.v_nodes_peak = pass.peak_interior_nodes();
     // Neither the depth order nor the coverage tree is needed any more.
     tree = decltype(tree){};
-    pass = coverage_pass<FT>(build_options{});
+    pass = make_sphere_pass<FT>(build_options{});
     // A polygon all of whose fragments were wholly visible is visible whole:
     // the map takes its own projection, without the depth order's cuts.
     {

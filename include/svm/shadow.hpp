@@ -134,7 +134,7 @@ light_split<FT> light_pass(std::vector<geometry::e3::sub_hyperplane<FT>> const& 
   auto tree = bsp::build_depth_order<K3>(std::move(input), bsp::few_splits(e3::axis_median_cut<FT>{}, options.seed));
   build_options bo;
   bo.seed = options.seed;
-  coverage_pass<FT> pass(bo);
+  auto pass = make_sphere_pass<FT>(bo);
   circle_store<FT> scratch;
   std::vector<std::uint32_t> fragments_of(n, 0), lit_whole(n, 0), dark_whole(n, 0);
   std::vector<fragment> lit, unlit;

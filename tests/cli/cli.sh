@@ -304,7 +304,43 @@ check "render --sun --light --shadows id: the square in shadow somewhere" grep -
 check "view --light: faces list the lights that reach them" grep -q '"polygon":6,"lights":\[0\]' "$work/view-lit.html"
 check "view --light: and the shadowed ones none" grep -q '"polygon":6,"lights":\[\]' "$work/view-lit.html"
 
-for sub in map locate stats scene render view shadow bool csg; do
+# visibility2d: a 10 x 10 room with a 2 x 2 hole, seen from (1, 5).
+printf 'POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0), (4 4, 4 6, 6 6, 6 4, 4 4))\n' >"$work/room.wkt"
+"$genbsp" visibility2d "$work/room.wkt" --eye 1,5 -o "$work/vis.wkt" >"$work/summary"
+# Behind the hole's near side, between the rays from (1,5) through (4,4) and
+# (4,6): the quadrilateral (4,4) (4,6) (10,8) (10,2), the hole inside it, of
+# area (2 + 6)/2 · 6 = 24: 100 − 24 = 76.
+check "visibility2d: exact area 76" test "$(summary_field area_exact <"$work/summary")" = "76"
+check "visibility2d: bounded" test "$(summary_field bounded <"$work/summary")" = "True"
+# (0,0) (10,0) (10,2) (4,4) (4,6) (10,8) (10,10) (0,10)
+check "visibility2d: 8 vertices" test "$(summary_field vertices <"$work/summary")" = "8"
+check "visibility2d: WKT polygon" grep -q '^POLYGON ((' "$work/vis.wkt"
+"$genbsp" visibility2d "$work/room.wkt" --eye 1,5 -o "$work/vis.geojson" >/dev/null
+check "visibility2d: GeoJSON names each piece's wall" python3 -c '
+import json, sys
+d = json.load(open(sys.argv[1]))
+assert d["geometry"]["type"] == "Polygon" and d["properties"]["area"] == 76
+walls = [p["wall"] for p in d["properties"]["pieces"]]
+assert {"polygon": 0, "ring": 1, "edge": 0} in walls, walls   # the hole edge (4,4)-(4,6) faces the eye
+assert {"polygon": 0, "ring": 0, "edge": 1} in walls, walls   # the far wall x = 10
+' "$work/vis.geojson"
+"$genbsp" visibility2d "$work/room.wkt" --eye 0,5 -o "$work/vis-edge.svg" >"$work/summary"
+check "visibility2d: an eye on the room's wall looks in" python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); assert 0 < d["area"] < 96' "$work/summary"
+check "visibility2d: SVG with the region and the walls" grep -q 'id="visible"' "$work/vis-edge.svg"
+printf 'MULTILINESTRING ((2 -1, 2 1), (4 -3, 4 3))\n' >"$work/walls.wkt"
+"$genbsp" visibility2d "$work/walls.wkt" --eye 0,0 -o "$work/open.wkt" >"$work/summary" 2>"$work/err"
+check "visibility2d: unbounded view reported" test "$(summary_field bounded <"$work/summary")" = "False"
+check "visibility2d: and clipped to a box, said on stderr" grep -q 'unbounded' "$work/err"
+"$genbsp" visibility2d "$work/walls.wkt" --eye 0,0 --box -10,-10,10,10 -o "$work/boxed.wkt" >"$work/summary"
+check "visibility2d --box: bounded by the box" test "$(summary_field bounded <"$work/summary")" = "True"
+expect_error "visibility2d: eye outside the box" "outside --box" "$genbsp" visibility2d "$work/walls.wkt" --eye 20,0 --box -10,-10,10,10 -o "$work/x.wkt"
+expect_error "visibility2d: a bad eye" "--eye" "$genbsp" visibility2d "$work/room.wkt" --eye 1,2,3 -o "$work/x.wkt"
+printf 'MULTILINESTRING ((2 -1, 2 1), (4 -3))\n' >"$work/bad-walls.wkt"
+expect_error "visibility2d: a one-point line string" "bad-walls.wkt:1: .*at least 2 positions" "$genbsp" visibility2d "$work/bad-walls.wkt" --eye 0,0 -o "$work/x.wkt"
+expect_error "visibility2d: unknown output format" "unknown output format" "$genbsp" visibility2d "$work/room.wkt" --eye 1,5 -o "$work/x.png"
+check "visibility2d: no file after an error" test ! -e "$work/x.wkt"
+
+for sub in map locate stats scene render view shadow bool csg visibility2d; do
   "$genbsp" "$sub" --help >"$work/help" 2>&1
   check "$sub --help exits 0" test $? -eq 0
   check "$sub --help says what it does" grep -q "Usage" "$work/help"

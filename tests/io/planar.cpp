@@ -7,6 +7,11 @@
 
 #include <catch2/catch.hpp>
 
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
 using namespace geometry;
 using test::Q;
 
@@ -42,7 +47,7 @@ TEST_CASE("WKT: errors name the file and line", "[io][wkt]") {
   CHECK(error_of([] { io::read_wkt("POLYGON ((0 0, 1 0,\n1 1, 0 0)", "x.wkt"); }) == "x.wkt:2: expected ',' or ')', found the end");
   CHECK(error_of([] { io::read_wkt("POLYGON ((0 0, 1 0, 1 1, 0 1))", "x.wkt"); }).find("x.wkt:1: a ring is not closed") == 0);
   CHECK(error_of([] { io::read_wkt("\n\nPOLYGON ((0 0, 1 0, 0 0))", "x.wkt"); }).find("x.wkt:3: a ring needs at least 4") == 0);
-  CHECK(error_of([] { io::read_wkt("POLYGON Z ((0 0 0, 1 0 0, 1 1 0, 0 0 0))", "x.wkt"); }).find("only planar polygons") != std::string::npos);
+  CHECK(error_of([] { io::read_wkt("POLYGON Z ((0 0 0, 1 0 0, 1 1 0, 0 0 0))", "x.wkt"); }).find("only planar geometries") != std::string::npos);
   CHECK(error_of([] { io::read_wkt("LINESTRING (0 0, 1 1)", "x.wkt"); }).find("expected POLYGON") != std::string::npos);
   CHECK(error_of([] { io::read_wkt("POLYGON ((0 0 1, 1 0 1, 1 1 1, 0 0 1))", "x.wkt"); }).find("more than two coordinates") != std::string::npos);
 }
@@ -87,4 +92,32 @@ TEST_CASE("Planar writers: WKT and GeoJSON read back to the nearest doubles", "[
   }
   CHECK(io::to_wkt({}) == "MULTIPOLYGON EMPTY\n");
   CHECK(io::to_svg(m).find("<path") != std::string::npos);
+}
+
+TEST_CASE("Walls: polygons and line strings from WKT and GeoJSON files", "[io][wkt][geojson]") {
+  auto dir = std::filesystem::temp_directory_path() / ("genbsp-walls-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  auto write = [&](char const* name, char const* text) {
+    std::ofstream(dir / name) << text;
+    return dir / name;
+  };
+  auto w = io::read_walls(write("a.wkt", "GEOMETRYCOLLECTION (POLYGON ((0 0, 4 0, 4 4, 0 0)),\n"
+                                         "MULTILINESTRING ((1 1, 2 2, 3 1.5), EMPTY), LINESTRING (0 5, 0.1 5))"));
+  REQUIRE(w.polygons.size() == 1);
+  REQUIRE(w.lines.size() == 2);
+  CHECK(w.lines[0].size() == 3);
+  CHECK(w.lines[0][2].y() == Q(3, 2));
+  CHECK(w.lines[1][1].x() == Q(1, 10));
+  auto g = io::read_walls(write("b.geojson", "{\"type\": \"FeatureCollection\", \"features\": [\n"
+                                             "{\"type\": \"Feature\", \"geometry\": {\"type\": \"LineString\", \"coordinates\": [[0, 0], [1, 1]]}},\n"
+                                             "{\"type\": \"Feature\", \"geometry\": {\"type\": \"MultiLineString\", \"coordinates\": [[[2, 0], [2, 1], [3, 1]]]}},\n"
+                                             "{\"type\": \"Feature\", \"geometry\": {\"type\": \"Polygon\", \"coordinates\": [[[0, 0], [1, 0], [1, 1], [0, 0]]]}}]}"));
+  CHECK(g.polygons.size() == 1);
+  REQUIRE(g.lines.size() == 2);
+  CHECK(g.lines[1].size() == 3);
+  CHECK(error_of([&] { io::read_walls(write("c.wkt", "LINESTRING (0 0)")); }).find("c.wkt:1: a line string needs at least 2 positions") !=
+        std::string::npos);
+  CHECK(error_of([&] { io::read_walls(write("d.wkt", "POINT (0 0)")); }).find("expected POLYGON, MULTIPOLYGON, LINESTRING") !=
+        std::string::npos);
+  std::filesystem::remove_all(dir);
 }

@@ -1,5 +1,6 @@
 // genbsp: the command-line program.  Subcommands map, locate, stats, render,
-// view, shadow, scene (here) and bool, csg (boolean.cpp).
+// view, shadow, scene (here), bool, csg (boolean.cpp) and visibility2d
+// (visibility2d.cpp).
 // Bad input gets one line on stderr (naming file and line where there is
 // one) and exit status 2; output files are written whole or not at all.
 #include <geometry/io/polygons.hpp>
@@ -16,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "boolean.hpp"
+#include "visibility2d.hpp"
 #include "common.hpp"
 #include "viewer_html.hpp"
 
@@ -622,6 +624,8 @@ int run(int argc, char** argv) {
 
   bool_job bj;
   bj.add_to(app);
+  visibility2d_job v2j;
+  v2j.add_to(app);
   csg_job cj;
   cj.add_to(app);
 
@@ -637,7 +641,9 @@ int run(int argc, char** argv) {
     return 2;
   }
 
-  if (*bj.command) {
+  if (*v2j.command) {
+    v2j.run();
+  } else if (*bj.command) {
     bj.run();
   } else if (*cj.command) {
     cj.run();

@@ -181,10 +181,45 @@ private:
       for (auto const& p : array(v, "coordinates").items) polygon(p, out);
     } else if (t == "GeometryCollection") {
       for (auto const& g : array(v, "geometries").items) geometry(g, out, false);
-    } else if (top || !(t == "Point" || t == "MultiPoint" || t == "LineString" || t == "MultiLineString")) {
+    } else if (lines_ && t == "LineString") {
+      path(array(v, "coordinates"));
+    } else if (lines_ && t == "MultiLineString") {
+      for (auto const& p : array(v, "coordinates").items) path(p);
+    } else if (lines_ && !(t == "Point" || t == "MultiPoint")) {
+      fail(v, cat("expected a Polygon, MultiPolygon, LineString, MultiLineString, GeometryCollection, Feature or FeatureCollection, found \"", t, "\""));
+    } else if (!lines_ && (top || !(t == "Point" || t == "MultiPoint" || t == "LineString" || t == "MultiLineString"))) {
       fail(v, cat("expected a Polygon, MultiPolygon, GeometryCollection, Feature or FeatureCollection, found \"", t, "\""));
     }
   }
+
+  void path(json_value const& v) {
+    if (v.type != json_value::kind::array) fail(v, "a line string's coordinates are not an array of positions");
+    ring r;
+    for (auto const& pos : v.items) r.push_back(position(pos));
+    if (r.size() == 1) fail(v, "a line string needs at least 2 positions");
+    if (!r.empty()) lines_->push_back(std::move(r));
+  }
+
+  point2 position(json_value const& pos) {
+    if (pos.type != json_value::kind::array || pos.items.size() < 2 || pos.items.size() > 3)
+      fail(pos, "a position is not an array of 2 or 3 numbers");
+    rational c[2];
+    for (std::size_t k = 0; k < 2; ++k) {
+      if (pos.items[k].type != json_value::kind::number) fail(pos, "a coordinate is not a number");
+      try {
+        c[k] = parse_number<rational>(pos.items[k].text);
+      } catch (parse_error const& e) {
+        fail(pos, e.what());
+      }
+    }
+    return point2(c[0], c[1]);
+  }
+
+public:
+  /// Line strings go to `lines` instead of being skipped (or refused at the top).
+  void keep_lines(std::vector<ring>* lines) { lines_ = lines; }
+
+private:
 
   void polygon(json_value const& v, multipolygon& out) {
     if (v.type != json_value::kind::array) fail(v, "a polygon's coordinates are not an array of rings");
@@ -202,20 +237,7 @@ private:
   ring ring_of(json_value const& v) {
     if (v.type != json_value::kind::array) fail(v, "a ring is not an array of positions");
     ring r;
-    for (auto const& pos : v.items) {
-      if (pos.type != json_value::kind::array || pos.items.size() < 2 || pos.items.size() > 3)
-        fail(pos, "a position is not an array of 2 or 3 numbers");
-      rational c[2];
-      for (std::size_t k = 0; k < 2; ++k) {
-        if (pos.items[k].type != json_value::kind::number) fail(pos, "a coordinate is not a number");
-        try {
-          c[k] = parse_number<rational>(pos.items[k].text);
-        } catch (parse_error const& e) {
-          fail(pos, e.what());
-        }
-      }
-      r.emplace_back(c[0], c[1]);
-    }
+    for (auto const& pos : v.items) r.push_back(position(pos));
     if (r.empty()) return r;
     if (r.size() < 4) fail(v, "a ring needs at least 4 positions (3 vertices and the first repeated)");
     if (!(r.front() == r.back())) fail(v, "a ring is not closed: its last position differs from its first");
@@ -224,6 +246,7 @@ private:
   }
 
   std::string name_;
+  std::vector<ring>* lines_ = nullptr;
 };
 
 } // namespace detail
@@ -234,6 +257,29 @@ inline multipolygon read_geojson(std::string_view text, std::string const& name)
   auto doc = p.parse_document();
   multipolygon out;
   detail::geojson_reader(name).object(doc, out);
+  return out;
+}
+
+/// Polygons and line strings of a plane scene (2D visibility's walls).
+struct plane_walls {
+  multipolygon polygons;
+  std::vector<ring> lines; ///< open paths, each of at least 2 positions
+};
+
+/// The polygons and line strings of a WKT or GeoJSON file.
+inline plane_walls read_walls(std::filesystem::path const& path) {
+  std::string text = read_text(path);
+  plane_walls out;
+  auto first = text.find_first_not_of(" \t\r\n");
+  if (first != std::string::npos && text[first] == '{') {
+    detail::json_parser p(text, path.string());
+    auto doc = p.parse_document();
+    detail::geojson_reader r(path.string());
+    r.keep_lines(&out.lines);
+    r.object(doc, out.polygons);
+  } else {
+    out.polygons = read_wkt(text, path.string(), out.lines);
+  }
   return out;
 }
 

@@ -108,17 +108,42 @@ inline void wkt_polygon(wkt_lexer& lx, multipolygon& out) {
   if (!p.outer.empty()) out.push_back(std::move(p));
 }
 
-inline void wkt_geometry(wkt_lexer& lx, multipolygon& out) {
+/// An open path: at least two positions.
+inline ring wkt_path(wkt_lexer& lx) {
+  ring r;
+  wkt_list(lx, [&] {
+    rational x = wkt_number(lx), y = wkt_number(lx);
+    auto s = lx.peek();
+    if (s != "," && s != ")") lx.fail("a vertex has more than two coordinates");
+    r.emplace_back(std::move(x), std::move(y));
+  });
+  if (r.size() == 1) lx.fail("a line string needs at least 2 positions");
+  return r;
+}
+
+/// Polygons into `out`; line strings into `lines`, or an error when it is null.
+inline void wkt_geometry(wkt_lexer& lx, multipolygon& out, std::vector<ring>* lines = nullptr) {
   auto kind = lx.next();
   auto dim = lx.peek();
   if (iequals(dim, "z") || iequals(dim, "m") || iequals(dim, "zm"))
-    lx.fail(cat("only planar polygons are read, not ", std::string(kind), " ", std::string(dim)));
+    lx.fail(cat("only planar geometries are read, not ", std::string(kind), " ", std::string(dim)));
+  auto path = [&] {
+    ring r = wkt_path(lx);
+    if (!r.empty()) lines->push_back(std::move(r));
+  };
   if (iequals(kind, "polygon"))
     wkt_polygon(lx, out);
   else if (iequals(kind, "multipolygon"))
     wkt_list(lx, [&] { wkt_polygon(lx, out); });
   else if (iequals(kind, "geometrycollection"))
-    wkt_list(lx, [&] { wkt_geometry(lx, out); });
+    wkt_list(lx, [&] { wkt_geometry(lx, out, lines); });
+  else if (lines && iequals(kind, "linestring"))
+    path();
+  else if (lines && iequals(kind, "multilinestring"))
+    wkt_list(lx, path);
+  else if (lines)
+    lx.fail(cat("expected POLYGON, MULTIPOLYGON, LINESTRING, MULTILINESTRING or GEOMETRYCOLLECTION, found ",
+                kind.empty() ? "the end" : quoted(kind)));
   else
     lx.fail(cat("expected POLYGON, MULTIPOLYGON or GEOMETRYCOLLECTION, found ", kind.empty() ? "the end" : quoted(kind)));
 }
@@ -132,6 +157,15 @@ inline multipolygon read_wkt(std::string_view text, std::string const& name) {
   detail::wkt_lexer lx(text, name);
   multipolygon out;
   detail::wkt_geometry(lx, out);
+  if (!lx.at_end()) lx.fail(detail::cat("unexpected ", detail::quoted(lx.peek()), " after the geometry"));
+  return out;
+}
+
+/// The polygons and line strings of a WKT text.
+inline multipolygon read_wkt(std::string_view text, std::string const& name, std::vector<ring>& lines) {
+  detail::wkt_lexer lx(text, name);
+  multipolygon out;
+  detail::wkt_geometry(lx, out, &lines);
   if (!lx.at_end()) lx.fail(detail::cat("unexpected ", detail::quoted(lx.peek()), " after the geometry"));
   return out;
 }

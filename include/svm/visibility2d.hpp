@@ -1,0 +1,509 @@
+/// @file
+/// Visibility polygons in the plane (2D visibility): the construction of the
+/// spherical visibility map one dimension down.  The walls (input segments)
+/// go into a depth-order tree of E2 once (`wall_index`, the preprocessing);
+/// for each eye the tree lists its fragments front to back, each is seen as
+/// an arc of the circle of directions S1, bounded by the lines through the
+/// eye and its ends, and it descends the same coverage pass as the fragments
+/// of a 3D view (`detail::coverage_pass`, here over S1): what reaches free
+/// directions is visible.  The result is a circular list of labelled arcs;
+/// the polygon's vertices are made from it only for output.
+///
+/// Every wall is opaque on both sides.  A wall whose line passes through the
+/// eye covers no direction and is left out.  Walls of polygon rings (the
+/// inside on their left: outer rings counter-clockwise, holes clockwise)
+/// also tell which way the eye looks when it lies on them: on a ring's edge,
+/// into the inside; at a ring's vertex, into the inside's wedge there.
+/// Directions out of the polygon see nothing (`behind_boundary`).
+#pragma once
+
+#include "build.hpp"
+
+#include <bsp/depth_order.hpp>
+#include <bsp/splitter.hpp>
+#include <geometry/e2.hpp>
+#include <geometry/s1.hpp>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <vector>
+
+namespace svm {
+
+/// The walls of a plane scene: closed rings (the inside on the left of each
+/// edge) and free segments.  Wall `i` is, in order, each ring's edges
+/// (vertex k to vertex k+1), then the segments.
+template <geometry::number FT> struct wall_scene {
+  std::vector<std::vector<geometry::e2::point<FT>>> rings;
+  std::vector<std::array<geometry::e2::point<FT>, 2>> segments;
+
+  /// The ends of wall `i`.
+  std::array<geometry::e2::point<FT>, 2> wall(std::size_t i) const {
+    for (auto const& r : rings) {
+      if (i < r.size()) return {r[i], r[(i + 1) % r.size()]};
+      i -= r.size();
+    }
+    return segments.at(i);
+  }
+  std::size_t wall_count() const {
+    std::size_t n = segments.size();
+    for (auto const& r : rings) n += r.size();
+    return n;
+  }
+};
+
+/// Labels of arcs where no wall is seen.
+inline constexpr std::int64_t no_wall = -1;         ///< nothing in those directions: the view is unbounded there
+inline constexpr std::int64_t behind_boundary = -2; ///< the eye is on a ring and those directions leave its inside
+
+/// A maximal arc of directions from the eye in which one wall is seen: from
+/// `start_point(from)` counter-clockwise to `−start_point(to)` (the whole
+/// circle when `whole`).  Each is a line through the eye, input-derived.
+template <geometry::number FT> struct view_arc {
+  geometry::s1::hyperplane<FT> from, to;
+  std::int64_t wall = no_wall;
+  bool whole = false;
+  geometry::s1::point<FT> start() const { return geometry::s1::start_point(from); }
+  geometry::s1::point<FT> end() const { return -geometry::s1::start_point(to); }
+};
+
+struct visibility2d_statistics {
+  std::size_t walls = 0;
+  std::size_t discarded_edge_on = 0;  ///< fragments on a line through the eye
+  std::size_t fragments = 0;          ///< of the depth-order tree (the preprocessing)
+  std::size_t hidden_pieces = 0;
+  std::size_t visible_pieces = 0;
+  std::size_t arcs = 0;               ///< of the result, merged
+  std::size_t coverage_nodes_peak = 0;
+  std::size_t culled_subtrees = 0;    ///< of the depth order, left out because their box was hidden
+  double seconds = 0;                 ///< the query, without the preprocessing
+};
+
+/// The view of a plane scene from a point: arcs counter-clockwise from the
+/// first one at or after direction (1, 0), covering the circle once.
+template <geometry::number FT> struct visibility_region {
+  geometry::e2::point<FT> eye;
+  std::vector<view_arc<FT>> arcs;
+  visibility2d_statistics stats;
+
+  /// Whether a wall bounds the view in every direction.
+  bool bounded() const {
+    return std::none_of(arcs.begin(), arcs.end(), [](auto const& a) { return a.wall == no_wall; });
+  }
+};
+
+namespace detail {
+
+/// An arc of S1 as a fragment of the coverage pass (`coverage_pass<s1::kernel<FT>>`).
+template <geometry::number FT> using arc_bound = flagged_bound<geometry::s1::hyperplane<FT>>;
+
+/// An arc at a node whose point pair is `g[0]` (`g[1]` its opposite): split
+/// when the pair cuts it, else passed on whole, and then an end of the arc at
+/// one of the pair's points is in the tree already (the flag reset).
+template <geometry::number FT>
+bsp::routed<std::vector<arc_bound<FT>>> route(std::vector<arc_bound<FT>>& arc,
+                                              std::array<geometry::s1::hyperplane<FT> const*, 2> const& g,
+                                              std::vector<geometry::sign>&) {
+  arc_bound<FT> hp{g[0], false}, hn{g[1], false};
+  auto r = geometry::detail::split_arc(arc, hp, hn);
+  if (r.negative && r.positive) return {0, std::move(r.negative), std::move(r.positive)};
+  for (auto& b : arc)
+    if (geometry::parallel(b.line(), g[0]->n) != geometry::sign::zero) b.flag = false;
+  return {r.positive ? +1 : -1, std::nullopt, std::nullopt};
+}
+
+/// An arc's ends always have a place: any non-zero point pair bounds it.
+template <geometry::number FT> bool proper_edge(std::vector<arc_bound<FT>> const& arc, std::size_t i) {
+  auto const& c = arc[i].line();
+  return !(c[0] == 0 && c[1] == 0);
+}
+
+/// Whether direction `u` comes before `v` counter-clockwise from (1, 0), exactly.
+template <geometry::number FT> bool angle_less(geometry::s1::point<FT> const& u, geometry::s1::point<FT> const& v) {
+  using geometry::sign;
+  auto half = [](geometry::s1::point<FT> const& p) {
+    sign y = p.sign_at(1);
+    return y == sign::negative || (y == sign::zero && p.sign_at(0) == sign::negative);
+  };
+  bool hu = half(u), hv = half(v);
+  if (hu != hv) return hv;
+  return geometry::det_sign(u, v) == sign::positive;
+}
+
+/// Whether `u` and `v` are the same direction.
+template <geometry::number FT> bool same_direction(geometry::s1::point<FT> const& u, geometry::s1::point<FT> const& v) {
+  return geometry::parallel(u, v) == geometry::sign::positive;
+}
+
+/// The arcs of directions from `p` counter-clockwise to `q` (the whole circle
+/// when they are the same direction), as S1 polytopes of at most a half circle each.
+template <geometry::number FT>
+std::vector<geometry::s1::polytope<FT>> arcs_between(geometry::s1::point<FT> const& p, geometry::s1::point<FT> const& q) {
+  using geometry::sign;
+  namespace s1 = geometry::s1;
+  sign turn = geometry::det_sign(p, q);
+  if (turn == sign::positive) return {s1::arc(p, q)};
+  std::vector<s1::polytope<FT>> out{{{s1::hyperplane_at(p)}}}; // p to −p
+  if (turn == sign::zero) {
+    if (geometry::dot_sign(p, q) == sign::positive) out.push_back({{s1::hyperplane_at(p).opposite()}}); // −p to p
+    return out;
+  }
+  out.push_back(s1::arc(geometry::s1::point<FT>(-p), q));
+  return out;
+}
+
+} // namespace detail
+
+/// How a view is computed.
+struct visibility2d_options {
+  std::uint64_t seed = 1; ///< splitter choice of the depth-order tree and the coverage tree's rebuilds
+};
+
+/// A plane scene's walls in a depth-order tree (the preprocessing), which
+/// answers the visibility region of any eye (`view`).
+template <geometry::number FT> class wall_index {
+public:
+  using kernel = geometry::e2::kernel<FT>;
+
+  explicit wall_index(wall_scene<FT> scene, visibility2d_options const& options = {})
+      : scene_(std::move(scene)), seed_(options.seed) {
+    namespace e2 = geometry::e2;
+    auto t0 = std::chrono::steady_clock::now();
+    bsp::fragment_list<kernel, std::uint32_t> input;
+    std::size_t n = scene_.wall_count();
+    for (std::uint32_t i = 0; i < n; ++i) {
+      auto [a, b] = scene_.wall(i);
+      if (a == b) continue; // a repeated vertex: no wall
+      input.push_back({e2::segment(a, b, i), i});
+    }
+    walls_ = input.size();
+    tree_ = bsp::build_depth_order<kernel>(std::move(input), bsp::few_splits(no_cut{}, seed_));
+    bsp::for_each_front_to_back(tree_, e2::point<FT>(), [&](auto const&) { ++fragments_; });
+    // Each node's box: of the walls of the fragments in its subtree (input
+    // coordinates, exact), children before parents.
+    boxes_.resize(tree_.interior_count());
+    std::vector<std::pair<bsp::node_id, bool>> stack{{tree_.root(), false}};
+    while (!stack.empty()) {
+      auto [n, done] = stack.back();
+      stack.pop_back();
+      if (tree_.is_leaf(n)) continue;
+      if (!done) {
+        stack.push_back({n, true});
+        stack.push_back({tree_.negative(n), false});
+        stack.push_back({tree_.positive(n), false});
+        continue;
+      }
+      auto& b = boxes_[n.index()];
+      for (auto const& fr : tree_.node_data(n))
+        for (auto const& p : scene_.wall(fr.id)) b.add(p);
+      for (auto c : {tree_.negative(n), tree_.positive(n)})
+        if (!tree_.is_leaf(c)) b.add(boxes_[c.index()]);
+    }
+    seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  }
+
+  wall_scene<FT> const& scene() const noexcept { return scene_; }
+  std::size_t fragments() const noexcept { return fragments_; }
+  double preprocessing_seconds() const noexcept { return seconds_; }
+
+  /// The visibility region of `eye`.
+  visibility_region<FT> view(geometry::e2::point<FT> const& eye) const {
+    using namespace geometry;
+    using fragment = std::vector<detail::arc_bound<FT>>;
+    auto t0 = std::chrono::steady_clock::now();
+    visibility_region<FT> out;
+    out.eye = eye;
+    auto& st = out.stats;
+    st.walls = walls_;
+    detail::coverage_pass<s1::kernel<FT>> pass(seed_);
+    detail::hyperplane_store<s1::hyperplane<FT>> store;
+    struct piece {
+      s1::hyperplane<FT> from, to;
+      std::int64_t wall;
+    };
+    std::vector<piece> visible;
+    auto keep = [&](fragment&& p, std::int64_t wall) {
+      // A piece is at most a half circle: two ends, or one bound [b], from
+      // start(b) to −start(b), which is `to = b`.
+      visible.push_back({*p.front().c, *p.back().c, wall});
+    };
+    // The directions out of the rings the eye lies on come first, covered.
+    for (auto const& arc : blocked(eye)) {
+      store.clear();
+      fragment f;
+      for (auto const& b : arc.bounds) f.push_back({&store.emplace_back(b), true});
+      pass.insert(std::move(f), [&](fragment&& p) { keep(std::move(p), behind_boundary); }, [](fragment&&) {});
+    }
+    pass.rebuild_if_grown();
+    auto const& o = eye.homogeneous();
+    auto insert = [&](bsp::fragment<kernel, std::uint32_t> const& fr) {
+      auto const& P = fr.piece.support.n;
+      sign po = dot_sign(P, o);
+      if (po == sign::zero) {
+        ++st.discarded_edge_on;
+        return;
+      }
+      ++st.fragments;
+      // Each end of the fragment seen from the eye: the line through the eye
+      // and the point P ∩ B, P(O)·B − B(O)·P, its normal as a point pair
+      // whose positive side holds the fragment.
+      bool flip = po == sign::negative;
+      auto ray = [flip](auto const& P, auto const& B, auto const& O) {
+        auto pb = geometry::dot(P, O), bb = geometry::dot(B, O);
+        std::array<std::remove_cvref_t<decltype(P[0])>, 2> n;
+        for (std::size_t i = 0; i < 2; ++i) {
+          auto q = pb * B[i] - bb * P[i];
+          n[i] = flip ? -q : q;
+        }
+        return n;
+      };
+      store.clear();
+      fragment f;
+      for (auto const& b : fr.piece.bounds)
+        f.push_back({&store.emplace_back(construct<2>(ray, P, b.original.n, o)), true});
+      if (f.size() != 2) throw std::logic_error("svm::wall_index: a fragment is not a bounded segment");
+      // [start, end] counter-clockwise: det(c₀, c₁) < 0.
+      if (det_sign(f[0].line(), f[1].line()) == sign::positive) std::swap(f[0], f[1]);
+      auto wall = static_cast<std::int64_t>(fr.id);
+      st.hidden_pieces += pass.insert(std::move(f), [&](fragment&& p) { keep(std::move(p), wall); }, [](fragment&&) {});
+      pass.rebuild_if_grown();
+    };
+    // Front to back through the depth order (as `bsp::for_each_front_to_back`),
+    // leaving out the subtrees whose box is hidden, and stopping once every
+    // direction is covered.
+    struct item {
+      bsp::node_id n;
+      bool emit;
+    };
+    std::vector<item> stack{{tree_.root(), false}};
+    while (!stack.empty() && !pass.all_covered()) {
+      auto [n, emit] = stack.back();
+      stack.pop_back();
+      if (tree_.is_leaf(n)) continue;
+      if (emit) {
+        for (auto const& fr : tree_.node_data(n)) insert(fr);
+        continue;
+      }
+      if (auto cone = boxes_[n.index()].seen_from(eye)) {
+        store.clear();
+        fragment f;
+        for (auto const& b : cone->bounds) f.push_back({&store.emplace_back(b), true});
+        if (pass.hidden(std::move(f))) {
+          ++st.culled_subtrees;
+          continue;
+        }
+      }
+      int s = static_cast<int>(kernel::side(tree_.splitter(n), eye));
+      bsp::node_id front = s >= 0 ? tree_.positive(n) : tree_.negative(n), back = s >= 0 ? tree_.negative(n) : tree_.positive(n);
+      stack.push_back({back, false});
+      stack.push_back({n, true});
+      stack.push_back({front, false});
+    }
+    st.visible_pieces = visible.size();
+    st.coverage_nodes_peak = pass.peak_interior_nodes();
+    // Counter-clockwise from (1, 0); touching pieces of one wall join, and
+    // gaps are arcs where nothing is seen.
+    auto start = [](piece const& p) { return s1::start_point(p.from); };
+    auto end = [](piece const& p) { return geometry::s1::point<FT>(-s1::start_point(p.to)); };
+    std::sort(visible.begin(), visible.end(), [&](piece const& a, piece const& b) { return detail::angle_less(start(a), start(b)); });
+    std::vector<piece> joined;
+    for (auto& p : visible) {
+      if (!joined.empty() && joined.back().wall == p.wall && detail::same_direction(end(joined.back()), start(p)))
+        joined.back().to = p.to;
+      else
+        joined.push_back(std::move(p));
+    }
+    if (joined.size() >= 2 && joined.back().wall == joined.front().wall &&
+        detail::same_direction(end(joined.back()), start(joined.front()))) {
+      joined.front().from = joined.back().from;
+      joined.pop_back();
+    }
+    if (joined.empty()) {
+      out.arcs.push_back({{}, {}, no_wall, true});
+    } else if (joined.size() == 1 && detail::same_direction(end(joined[0]), start(joined[0]))) {
+      out.arcs.push_back({joined[0].from, joined[0].to, joined[0].wall, true});
+    } else {
+      for (std::size_t i = 0; i < joined.size(); ++i) {
+        auto const& p = joined[i];
+        out.arcs.push_back({p.from, p.to, p.wall, false});
+        auto const& q = joined[(i + 1) % joined.size()];
+        if (!detail::same_direction(end(p), start(q))) out.arcs.push_back({p.to.opposite(), q.from.opposite(), no_wall, false});
+      }
+    }
+    // An arc across (1, 0), and the gap after it, start late: order by start.
+    std::sort(out.arcs.begin(), out.arcs.end(),
+              [](view_arc<FT> const& a, view_arc<FT> const& b) { return detail::angle_less(a.start(), b.start()); });
+    st.arcs = out.arcs.size();
+    st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return out;
+  }
+
+private:
+  /// An axis-aligned box of input points, exact.
+  struct box {
+    std::optional<std::array<FT, 4>> b; ///< xmin, ymin, xmax, ymax
+    void add(geometry::e2::point<FT> const& p) {
+      if (!b) {
+        b = std::array<FT, 4>{p.x(), p.y(), p.x(), p.y()};
+        return;
+      }
+      auto& v = *b;
+      if (p.x() < v[0]) v[0] = p.x();
+      if (p.y() < v[1]) v[1] = p.y();
+      if (p.x() > v[2]) v[2] = p.x();
+      if (p.y() > v[3]) v[3] = p.y();
+    }
+    void add(box const& o) {
+      if (!o.b) return;
+      add(geometry::e2::point<FT>((*o.b)[0], (*o.b)[1]));
+      add(geometry::e2::point<FT>((*o.b)[2], (*o.b)[3]));
+    }
+    /// The arc of directions from `eye` to the box (less than a half circle),
+    /// between the rays through two of its corners; nothing when the eye is
+    /// in the closed box.
+    std::optional<geometry::s1::polytope<FT>> seen_from(geometry::e2::point<FT> const& eye) const {
+      using geometry::sign;
+      if (!b) return std::nullopt;
+      auto const& v = *b;
+      if (v[0] <= eye.x() && eye.x() <= v[2] && v[1] <= eye.y() && eye.y() <= v[3]) return std::nullopt;
+      std::array<geometry::s1::point<FT>, 4> c;
+      std::array<std::array<FT, 2>, 4> xy{{{v[0], v[1]}, {v[2], v[1]}, {v[2], v[3]}, {v[0], v[3]}}};
+      for (std::size_t i = 0; i < 4; ++i) c[i] = geometry::s1::point<FT>(std::array<FT, 2>{FT(xy[i][0] - eye.x()), FT(xy[i][1] - eye.y())});
+      // The first corner has every other counter-clockwise of it (or on its ray), the last every other clockwise.
+      auto extreme = [&](bool first) -> std::size_t {
+        for (std::size_t i = 0; i < 4; ++i) {
+          bool ok = true;
+          for (std::size_t j = 0; j < 4 && ok; ++j) {
+            sign t = first ? geometry::det_sign(c[i], c[j]) : geometry::det_sign(c[j], c[i]);
+            ok = t != sign::negative;
+          }
+          if (ok) return i;
+        }
+        return 4;
+      };
+      std::size_t a = extreme(true), z = extreme(false);
+      if (a == 4 || z == 4 || geometry::det_sign(c[a], c[z]) != sign::positive) return std::nullopt;
+      return geometry::s1::arc(c[a], c[z]);
+    }
+  };
+
+  struct no_cut {
+    template <class Items> std::optional<geometry::e2::hyperplane<FT>> operator()(Items const&) const { return std::nullopt; }
+  };
+
+  /// The arcs of directions that leave the inside of a ring the eye lies on.
+  std::vector<geometry::s1::polytope<FT>> blocked(geometry::e2::point<FT> const& eye) const {
+    using namespace geometry;
+    std::vector<s1::polytope<FT>> out;
+    auto dir = [&](e2::point<FT> const& p) {
+      return s1::point<FT>(std::array<FT, 2>{FT(p.x() - eye.x()), FT(p.y() - eye.y())});
+    };
+    for (auto const& r : scene_.rings) {
+      std::size_t k = r.size();
+      for (std::size_t i = 0; i < k; ++i) {
+        auto const &a = r[i], &b = r[(i + 1) % k];
+        if (a == b) continue;
+        if (a == eye) {
+          // At a vertex: from the previous distinct vertex counter-clockwise to the next.
+          std::size_t j = (i + k - 1) % k;
+          while (j != i && r[j] == eye) j = (j + k - 1) % k;
+          auto more = detail::arcs_between(dir(r[j]), dir(b));
+          out.insert(out.end(), more.begin(), more.end());
+          continue;
+        }
+        if (b == eye || e2::orientation(a, b, eye) != sign::zero) continue;
+        auto da = dir(a), db = dir(b);
+        if (dot_sign(da, db) != sign::negative) continue; // on the line, not between the ends
+        // Inside an edge: the half circle on its right, from a − b to b − a.
+        out.push_back({{s1::hyperplane_at(da)}});
+      }
+    }
+    return out;
+  }
+
+  wall_scene<FT> scene_;
+  std::uint64_t seed_;
+  std::size_t walls_ = 0, fragments_ = 0;
+  double seconds_ = 0;
+  bsp::depth_order_tree<kernel, std::uint32_t> tree_;
+  std::vector<box> boxes_; ///< of each interior node of `tree_`
+};
+
+/// The visibility region of `eye` among `scene`'s walls (one query: the
+/// preprocessing included).
+template <geometry::number FT>
+visibility_region<FT> visibility(wall_scene<FT> scene, geometry::e2::point<FT> const& eye, visibility2d_options const& options = {}) {
+  return wall_index<FT>(std::move(scene), options).view(eye);
+}
+
+/// The arc of `region` that holds direction `d` (an arc's start belongs to it).
+template <geometry::number FT>
+view_arc<FT> const& locate(visibility_region<FT> const& region, geometry::s1::point<FT> const& d) {
+  auto const& a = region.arcs;
+  if (a.size() == 1) return a[0];
+  // The last arc starting at or before d counter-clockwise from (1, 0); before the first: the last.
+  auto it = std::upper_bound(a.begin(), a.end(), d, [](auto const& dir, view_arc<FT> const& arc) {
+    return detail::angle_less(dir, arc.start());
+  });
+  return it == a.begin() ? a.back() : *std::prev(it);
+}
+
+/// Where the line through `eye` in direction `d` meets the line of `wall`
+/// (they are not parallel): an output construction, exact.
+template <geometry::number FT>
+geometry::e2::point<FT> hit_point(geometry::e2::point<FT> const& eye, geometry::s1::point<FT> const& d,
+                                  std::array<geometry::e2::point<FT>, 2> const& wall) {
+  FT ex = wall[1].x() - wall[0].x(), ey = wall[1].y() - wall[0].y();
+  FT den = d[0] * ey - d[1] * ex;
+  if (den == 0) throw std::logic_error("svm::hit_point: the direction is parallel to the wall");
+  FT t = ((wall[0].x() - eye.x()) * ey - (wall[0].y() - eye.y()) * ex) / den;
+  return geometry::e2::point<FT>(FT(eye.x() + t * d[0]), FT(eye.y() + t * d[1]));
+}
+
+/// The boundary of a bounded region: for each arc counter-clockwise, the
+/// points of its wall at its start and end (the eye for arcs behind the
+/// boundary), repeated points once.  Nothing when the region is unbounded.
+template <geometry::number FT>
+std::optional<std::vector<geometry::e2::point<FT>>> boundary(visibility_region<FT> const& region, wall_scene<FT> const& scene) {
+  if (!region.bounded()) return std::nullopt;
+  std::vector<geometry::e2::point<FT>> out;
+  auto put = [&](geometry::e2::point<FT> p) {
+    if (out.empty() || !(out.back() == p)) out.push_back(std::move(p));
+  };
+  for (auto const& a : region.arcs) {
+    if (a.wall == behind_boundary) {
+      put(region.eye);
+      continue;
+    }
+    auto w = scene.wall(static_cast<std::size_t>(a.wall));
+    if (a.whole) {
+      // One wall all around: impossible for a segment, which subtends less than a half circle.
+      throw std::logic_error("svm::boundary: one wall seen in every direction");
+    }
+    put(hit_point(region.eye, a.start(), w));
+    put(hit_point(region.eye, a.end(), w));
+  }
+  while (out.size() >= 2 && out.front() == out.back()) out.pop_back();
+  return out;
+}
+
+/// The exact area of a bounded region (the triangles from the eye to each
+/// arc's piece of wall); nothing when it is unbounded.
+template <geometry::number FT> std::optional<FT> area(visibility_region<FT> const& region, wall_scene<FT> const& scene) {
+  if (!region.bounded()) return std::nullopt;
+  FT twice(0);
+  auto const& e = region.eye;
+  for (auto const& a : region.arcs) {
+    if (a.wall == behind_boundary) continue;
+    auto w = scene.wall(static_cast<std::size_t>(a.wall));
+    auto p = hit_point(e, a.start(), w), q = hit_point(e, a.end(), w);
+    twice += (p.x() - e.x()) * (q.y() - e.y()) - (p.y() - e.y()) * (q.x() - e.x());
+  }
+  return FT(twice / 2);
+}
+
+} // namespace svm

@@ -1,0 +1,252 @@
+// genbsp visibility2d: the exact visibility polygon of a point among walls
+// in the plane (polygons with holes and line strings, WKT or GeoJSON).
+#include "visibility2d.hpp"
+#include "common.hpp"
+
+#include <geometry/io/geojson.hpp>
+#include <geometry/io/planar.hpp>
+#include <geometry/io/wkt.hpp>
+#include <svm/visibility2d.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <sstream>
+
+namespace genbsp_tool {
+
+namespace {
+
+using json = nlohmann::ordered_json;
+using point2 = geometry::e2::point<rational>;
+using walls = svm::wall_scene<rational>;
+
+/// "A,B,…" read exactly as `count` numbers.
+std::vector<rational> numbers(std::string const& text, std::size_t count, std::string const& option, std::string const& form) {
+  std::vector<rational> out;
+  std::size_t start = 0;
+  for (std::size_t i = 0; i < count; ++i) {
+    std::size_t end = text.find(',', start);
+    if ((i + 1 < count) != (end != std::string::npos)) throw usage_error(option + ": expected " + form + ", got '" + text + "'");
+    try {
+      out.push_back(geometry::parse_number<rational>(text.substr(start, end == std::string::npos ? std::string::npos : end - start)));
+    } catch (geometry::parse_error const& e) {
+      throw usage_error(option + ": " + e.what());
+    }
+    start = end + 1;
+  }
+  return out;
+}
+
+rational twice_area(geometry::io::ring const& r) {
+  rational t(0);
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    auto const &a = r[i], &b = r[(i + 1) % r.size()];
+    t += a.x() * b.y() - a.y() * b.x();
+  }
+  return t;
+}
+
+/// The walls of a file, each described as the input names it: rings turned
+/// so that their polygon's inside is on the left (outer rings
+/// counter-clockwise, holes clockwise), line strings' segments two-sided.
+struct loaded_walls {
+  walls scene;
+  std::vector<json> names;
+};
+
+loaded_walls load(std::string const& file) {
+  auto in = geometry::io::read_walls(file);
+  loaded_walls out;
+  for (std::size_t k = 0; k < in.polygons.size(); ++k) {
+    auto& p = in.polygons[k];
+    for (std::size_t r = 0; r <= p.holes.size(); ++r) {
+      auto ring = r == 0 ? p.outer : p.holes[r - 1];
+      std::size_t n = ring.size();
+      rational t = twice_area(ring);
+      bool reverse = r == 0 ? t < 0 : t > 0;
+      if (reverse) std::reverse(ring.begin(), ring.end());
+      for (std::size_t i = 0; i < n; ++i) {
+        // Edge i of the turned ring is the input's edge n − 2 − i (mod n).
+        std::size_t edge = reverse ? (2 * n - 2 - i) % n : i;
+        out.names.push_back({{"polygon", k}, {"ring", r}, {"edge", edge}});
+      }
+      out.scene.rings.push_back(std::move(ring));
+    }
+  }
+  for (std::size_t k = 0; k < in.lines.size(); ++k) {
+    auto const& l = in.lines[k];
+    for (std::size_t i = 0; i + 1 < l.size(); ++i) {
+      out.scene.segments.push_back({l[i], l[i + 1]});
+      out.names.push_back({{"line", k}, {"segment", i}});
+    }
+  }
+  return out;
+}
+
+std::string extension(std::string const& path) {
+  std::string e = std::filesystem::path(path).extension().string();
+  for (auto& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return e;
+}
+
+std::string num(rational const& q) { return geometry::io::detail::shortest(q); }
+
+std::string svg_of(walls const& s, std::vector<point2> const& boundary, point2 const& eye) {
+  double x0 = eye.x().convert_to<double>(), x1 = x0, y0 = eye.y().convert_to<double>(), y1 = y0;
+  auto grow = [&](point2 const& p) {
+    double x = p.x().convert_to<double>(), y = p.y().convert_to<double>();
+    x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+  };
+  for (std::size_t i = 0; i < s.wall_count(); ++i)
+    for (auto const& p : s.wall(i)) grow(p);
+  for (auto const& p : boundary) grow(p);
+  double w = std::max(x1 - x0, 1e-9), h = std::max(y1 - y0, 1e-9), width = 800, scale = (width - 20) / w, height = h * scale + 20;
+  auto px = [&](point2 const& p) {
+    std::ostringstream t;
+    t << 10 + (p.x().convert_to<double>() - x0) * scale << ',' << 10 + (y1 - p.y().convert_to<double>()) * scale;
+    return t.str();
+  };
+  std::ostringstream o;
+  o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height << "\" viewBox=\"0 0 " << width
+    << ' ' << height << "\">\n";
+  o << "<path id=\"visible\" fill=\"#f3d36b\" fill-opacity=\"0.8\" stroke=\"#b08a10\" stroke-width=\"1\" d=\"";
+  for (std::size_t i = 0; i < boundary.size(); ++i) o << (i ? " L" : "M") << px(boundary[i]);
+  o << " Z\"/>\n<g id=\"walls\" stroke=\"#222\" stroke-width=\"2\" stroke-linecap=\"round\">\n";
+  for (std::size_t i = 0; i < s.wall_count(); ++i) {
+    auto w2 = s.wall(i);
+    auto a = px(w2[0]), b = px(w2[1]);
+    auto ca = a.find(','), cb = b.find(',');
+    o << "<line x1=\"" << a.substr(0, ca) << "\" y1=\"" << a.substr(ca + 1) << "\" x2=\"" << b.substr(0, cb) << "\" y2=\""
+      << b.substr(cb + 1) << "\"/>\n";
+  }
+  auto e = px(eye);
+  auto ce = e.find(',');
+  o << "</g>\n<circle id=\"eye\" cx=\"" << e.substr(0, ce) << "\" cy=\"" << e.substr(ce + 1) << "\" r=\"4\" fill=\"#c0392b\"/>\n</svg>\n";
+  return o.str();
+}
+
+} // namespace
+
+void visibility2d_job::add_to(CLI::App& app) {
+  command = app.add_subcommand("visibility2d", "the exact visibility polygon of a point among walls in the plane; prints a JSON summary");
+  command->add_option("SCENE", scene,
+                      "walls: a WKT or GeoJSON file of polygons (with holes) and line strings; every edge is an opaque wall, and "
+                      "an eye on a polygon's boundary looks into the polygon")
+      ->required();
+  command->add_option("--eye", eye, "the point X,Y that looks around (exact decimals)")->required();
+  command->add_option("--box", box,
+                      "XMIN,YMIN,XMAX,YMAX: a room around everything that bounds the view; without it an unbounded view is "
+                      "clipped to a box twice the scene's size and reported as \"bounded\": false");
+  command->add_option("-o,--output", output, "OUT.wkt, OUT.geojson (or .json: a Feature with each boundary piece's wall) or OUT.svg; - writes WKT to standard output")
+      ->required();
+  command->add_option("--seed", seed, "splitter choice of the depth-order tree (the result does not depend on it)");
+}
+
+void visibility2d_job::run() const {
+  auto start = std::chrono::steady_clock::now();
+  std::string ext = output == "-" ? ".wkt" : extension(output);
+  bool geojson = ext == ".geojson" || ext == ".json";
+  if (ext != ".wkt" && !geojson && ext != ".svg")
+    throw usage_error(output + ": unknown output format '" + ext + "' (use .wkt, .geojson or .svg)");
+  auto e = numbers(eye, 2, "--eye", "two numbers X,Y");
+  point2 o(e[0], e[1]);
+  auto in = load(scene);
+  // Ring walls come first in the scene's numbering, then segments: the
+  // names were made in that order.
+  auto add_box = [&](rational x0, rational y0, rational x1, rational y1) {
+    // The box is the last ring: its walls go before the segments' names.
+    std::size_t ring_walls = 0;
+    for (auto const& r : in.scene.rings) ring_walls += r.size();
+    in.scene.rings.push_back({point2(x0, y0), point2(x1, y0), point2(x1, y1), point2(x0, y1)});
+    std::vector<json> box_names;
+    for (int j = 0; j < 4; ++j) box_names.push_back({{"box", j}});
+    in.names.insert(in.names.begin() + static_cast<std::ptrdiff_t>(ring_walls), box_names.begin(), box_names.end());
+  };
+  json box_json = nullptr;
+  if (!box.empty()) {
+    auto b = numbers(box, 4, "--box", "four numbers XMIN,YMIN,XMAX,YMAX");
+    if (!(b[0] < b[2] && b[1] < b[3])) throw usage_error("--box: expected XMIN < XMAX and YMIN < YMAX, got '" + box + "'");
+    if (o.x() < b[0] || o.x() > b[2] || o.y() < b[1] || o.y() > b[3]) throw usage_error("--eye: the eye is outside --box");
+    add_box(b[0], b[1], b[2], b[3]);
+    box_json = {b[0].convert_to<double>(), b[1].convert_to<double>(), b[2].convert_to<double>(), b[3].convert_to<double>()};
+  }
+  svm::visibility2d_options options;
+  options.seed = seed;
+  auto index = std::make_unique<svm::wall_index<rational>>(in.scene, options);
+  auto region = index->view(o);
+  bool bounded = region.bounded();
+  double preprocessing = index->preprocessing_seconds(), query = region.stats.seconds;
+  if (!bounded) {
+    // Clipped to a box twice the size of the scene and the eye.
+    rational x0 = o.x(), x1 = o.x(), y0 = o.y(), y1 = o.y();
+    for (std::size_t i = 0; i < in.scene.wall_count(); ++i)
+      for (auto const& p : in.scene.wall(i)) x0 = std::min(x0, p.x()), x1 = std::max(x1, p.x()), y0 = std::min(y0, p.y()), y1 = std::max(y1, p.y());
+    rational m = std::max({x1 - x0, y1 - y0, rational(1)}) / 2;
+    add_box(x0 - m, y0 - m, x1 + m, y1 + m);
+    box_json = {(x0 - m).convert_to<double>(), (y0 - m).convert_to<double>(), (x1 + m).convert_to<double>(), (y1 + m).convert_to<double>()};
+    std::cerr << "genbsp: the view is unbounded; it is clipped to the box " << box_json.dump() << " (give --box to choose one)\n";
+    index = std::make_unique<svm::wall_index<rational>>(in.scene, options);
+    region = index->view(o);
+    preprocessing += index->preprocessing_seconds();
+    query += region.stats.seconds;
+  }
+  auto boundary = svm::boundary(region, in.scene);
+  auto area = svm::area(region, in.scene);
+  if (!boundary || !area) throw std::logic_error("visibility2d: the view inside a box is unbounded");
+  std::string text;
+  if (ext == ".svg") {
+    text = svg_of(in.scene, *boundary, o);
+  } else if (geojson) {
+    json ring = json::array();
+    for (std::size_t i = 0; i <= boundary->size(); ++i) {
+      auto const& p = (*boundary)[i % boundary->size()];
+      ring.push_back({p.x().convert_to<double>(), p.y().convert_to<double>()});
+    }
+    json pieces = json::array();
+    for (auto const& a : region.arcs) {
+      if (a.wall < 0) continue;
+      auto w = in.scene.wall(static_cast<std::size_t>(a.wall));
+      auto p = svm::hit_point(o, a.start(), w), q = svm::hit_point(o, a.end(), w);
+      pieces.push_back({{"wall", in.names[static_cast<std::size_t>(a.wall)]},
+                        {"from", {p.x().convert_to<double>(), p.y().convert_to<double>()}},
+                        {"to", {q.x().convert_to<double>(), q.y().convert_to<double>()}}});
+    }
+    json f = {{"type", "Feature"},
+              {"geometry", {{"type", "Polygon"}, {"coordinates", json::array({ring})}}},
+              {"properties",
+               {{"eye", {o.x().convert_to<double>(), o.y().convert_to<double>()}},
+                {"area", area->convert_to<double>()},
+                {"bounded", bounded},
+                {"pieces", pieces}}}};
+    text = f.dump() + "\n";
+  } else {
+    std::string s = "POLYGON ((";
+    for (std::size_t i = 0; i <= boundary->size(); ++i) {
+      auto const& p = (*boundary)[i % boundary->size()];
+      if (i) s += ", ";
+      s += num(p.x()) + ' ' + num(p.y());
+    }
+    text = s + "))\n";
+  }
+  write_file(output, text);
+  auto const& st = region.stats;
+  json summary = {{"area", area->convert_to<double>()},
+                  {"area_exact", exact_text(*area)},
+                  {"vertices", boundary->size()},
+                  {"bounded", bounded},
+                  {"box", box_json},
+                  {"walls", st.walls},
+                  {"arcs", st.arcs},
+                  {"fragments", st.fragments},
+                  {"visible_pieces", st.visible_pieces},
+                  {"hidden_pieces", st.hidden_pieces},
+                  {"preprocessing_seconds", preprocessing},
+                  {"query_seconds", query},
+                  {"seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()}};
+  (output == "-" ? std::cerr : std::cout) << summary.dump() << "\n";
+}
+
+} // namespace genbsp_tool
