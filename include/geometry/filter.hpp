@@ -42,7 +42,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
-#include <mutex>
+#include <atomic>
 #include <optional>
 #include <type_traits>
 #include <utility>
@@ -135,6 +135,32 @@ template <std::size_t N> struct integer_vector {
   }
 };
 
+/// A value made on first use, at most once kept, by any thread: a thread
+/// that finds it absent makes one and publishes it with a compare-exchange;
+/// a thread that loses the race drops its own.  No lock and no system call
+/// (`std::call_once` wakes waiters with one at every first call).
+template <class T> class lazy_value {
+public:
+  lazy_value() = default;
+  explicit lazy_value(std::unique_ptr<T> v) : p_(v.release()) {}
+  lazy_value(lazy_value const&) = delete;
+  lazy_value& operator=(lazy_value const&) = delete;
+  ~lazy_value() { delete p_.load(std::memory_order_relaxed); }
+
+  /// The value, made by `make()` (returning a `std::unique_ptr<T>`) when absent.
+  template <class Make> T const& get(Make&& make) const {
+    if (T* p = p_.load(std::memory_order_acquire)) return *p;
+    std::unique_ptr<T> fresh = make();
+    T* expected = nullptr;
+    if (p_.compare_exchange_strong(expected, fresh.get(), std::memory_order_acq_rel, std::memory_order_acquire))
+      return *fresh.release();
+    return *expected;
+  }
+
+private:
+  mutable std::atomic<T*> p_{nullptr};
+};
+
 /// The coordinates of a vector and of its opposite, kept once and shared by
 /// every copy of either (they are never changed after construction).  A
 /// vector always has its *integer* coordinates: the primitive integer
@@ -155,33 +181,29 @@ public:
 
   integer_vector<N> const& integers(bool negated) const {
     if (!negated) return z_;
-    std::call_once(negative_z_once_, [this] { negative_z_ = std::make_unique<integer_vector<N>>(-z_); });
-    return *negative_z_;
+    return negative_z_.get([this] { return std::make_unique<integer_vector<N>>(-z_); });
   }
 
   std::array<rational, N> const& rationals(bool negated) const {
-    std::call_once(c_once_, [this] {
-      if (c_) return;
+    auto const& c = c_.get([this] {
       auto c = std::make_unique<std::array<rational, N>>();
       for (std::size_t i = 0; i < N; ++i) mpq_set_z((*c)[i].backend().data(), z_.z[i].backend().data());
-      c_ = std::move(c);
+      return c;
     });
-    if (!negated) return *c_;
-    std::call_once(negative_c_once_, [this] {
+    if (!negated) return c;
+    return negative_c_.get([&c] {
       auto m = std::make_unique<std::array<rational, N>>();
-      for (std::size_t i = 0; i < N; ++i) (*m)[i] = -(*c_)[i];
-      negative_c_ = std::move(m);
+      for (std::size_t i = 0; i < N; ++i) (*m)[i] = -c[i];
+      return m;
     });
-    return *negative_c_;
   }
 
 private:
   // What is made on demand is held by pointer: an absent part costs 8 bytes.
   integer_vector<N> z_;
-  mutable std::unique_ptr<std::array<rational, N>> c_;
-  mutable std::unique_ptr<integer_vector<N>> negative_z_;
-  mutable std::unique_ptr<std::array<rational, N>> negative_c_;
-  mutable std::once_flag c_once_, negative_z_once_, negative_c_once_;
+  lazy_value<std::array<rational, N>> c_;
+  lazy_value<integer_vector<N>> negative_z_;
+  lazy_value<std::array<rational, N>> negative_c_;
 };
 
 /// Divides `z` by the greatest common divisor of its entries (when not 0).
