@@ -146,6 +146,23 @@ check "render: no file after an error" test ! -e "$work/x.svg"
 printf '0 0 0\n3 3 -100\n10 10 1\n0.1 0.2 50\n' >"$work/points"
 "$genbsp" locate "$work/scene.off" --view-dir 0,0,1 --dirs "$work/points" >"$work/located-parallel"
 check "locate --view-dir: faces along parallel lines" test "$(tr '\n' ' ' <"$work/located-parallel")" = "0 6 -1 0 "
+"$genbsp" map "$work/scene.off" --view-dir 0,0,1 -o "$work/map-parallel.json"
+check "map --view-dir: the cube's face of area 1 and the square's 63 around it, in the view plane" python3 -c '
+import json, sys
+d = json.load(open(sys.argv[1]))
+assert d["view"]["direction"] == [0, 0, 1] and d["view"]["up"] == [0, 1, 0] and d["view"]["right"] == [-1, 0, 0], d["view"]
+xy = d["vertices"]
+def area(c):
+    return sum(xy[a][0] * xy[b][1] - xy[b][0] * xy[a][1] for a, b in zip(c, c[1:] + c[:1])) / 2
+faces = {}
+for f in d["faces"]:
+    faces[f["polygon"]] = faces.get(f["polygon"], 0) + sum(area(c) for c in f["cycles"])
+    assert area(f["cycles"][0]) > 0 or f["polygon"] == -1   # the outer cycle first, counter-clockwise
+assert abs(faces[0] - 1) < 1e-9 and abs(faces[6] - 63) < 1e-9, faces
+assert all(abs(x) <= 4 + 1e-9 and abs(y) <= 4 + 1e-9 for x, y in xy)
+' "$work/map-parallel.json"
+expect_error "map: --up without --view-dir" "--up is for --view-dir" "$genbsp" map "$work/scene.off" --eye 0,0,0 --up 0,0,1 -o "$work/x.json"
+expect_error "map: neither --eye nor --view-dir" "--view-dir" "$genbsp" map "$work/scene.off" -o "$work/x.json"
 "$genbsp" stats "$work/scene.off" --view-dir 1,1,3 >"$work/stats-parallel.json"
 check "stats --view-dir: a map" python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); sys.exit(not (d["polygons"] == 7 and d["map"]["faces"] >= 5))' "$work/stats-parallel.json"
 expect_error "locate: --eye and --view-dir" "--view-dir" "$genbsp" locate "$work/scene.off" --eye 0,0,0 --view-dir 0,0,1 --dirs "$work/points"

@@ -312,6 +312,70 @@ json map_json(svm::visibility_map<FT> const& vm, geometry::e3::point<rational> c
           {"stats", stats_json(vm, l)}};
 }
 
+svm::vec3 parse_vec(std::string const& text, std::string const& option);
+
+/// MAP.json of a parallel view: the map's vertices where their rays meet
+/// the view plane through the scene's centre, in that plane's coordinates
+/// (`right`, `up`); cycles counter-clockwise in them, the outer one first.
+json parallel_map_json(svm::visibility_map<rational> const& vm, svm::view_from_infinity<rational> const& view, std::string const& up_text,
+                       loaded const& l) {
+  auto const& m = vm.map;
+  auto d = [](rational const& x) { return x.convert_to<double>(); };
+  auto const& e = view.direction(); // towards the viewer
+  svm::vec3 f{-d(e[0]), -d(e[1]), -d(e[2])};
+  auto norm = [](svm::vec3 v) {
+    double n = std::sqrt(geometry::dot(v, v));
+    return svm::vec3{v[0] / n, v[1] / n, v[2] / n};
+  };
+  f = norm(f);
+  svm::vec3 up = up_text.empty() ? (f[0] == 0 && f[1] == 0 ? svm::vec3{0, 1, 0} : svm::vec3{0, 0, 1}) : parse_vec(up_text, "--up");
+  double along = geometry::dot(up, f);
+  up = {up[0] - along * f[0], up[1] - along * f[1], up[2] - along * f[2]};
+  if (geometry::dot(up, up) < 1e-24) throw usage_error("--up: parallel to the view direction");
+  up = norm(up);
+  svm::vec3 right = geometry::cross(f, up);
+  // The ray from the image's eye along the unit vector u meets the fixed
+  // plane e·(x − c) = 0 at c + s·e/|e|² − s·u/(e·u): its coordinates are
+  // −s·(u·right)/(e·u) and −s·(u·up)/(e·u).
+  double s = d(view.s());
+  svm::vec3 ed{d(e[0]), d(e[1]), d(e[2])};
+  json vertices = json::array();
+  std::vector<std::array<double, 2>> xy;
+  for (svm::index v = 0; v < m.vertices().size(); ++v) {
+    auto u = svm::unit(m, v);
+    double eu = geometry::dot(ed, u);
+    if (!(eu < 0)) throw std::logic_error("map --view-dir: a vertex of the map does not face the view plane");
+    xy.push_back({-s * geometry::dot(u, right) / eu, -s * geometry::dot(u, up) / eu});
+    vertices.push_back({xy.back()[0], xy.back()[1]});
+  }
+  auto cycles = svm::face_cycles(m);
+  json faces = json::array();
+  for (svm::index f2 = 0; f2 < m.faces().size(); ++f2) {
+    // Counter-clockwise on the sphere seen from outside is clockwise seen from the eye: reversed.
+    std::vector<std::pair<double, json>> cs;
+    for (auto const& c : cycles[f2]) {
+      std::vector<svm::index> ids;
+      for (auto it = c.rbegin(); it != c.rend(); ++it) ids.push_back(m.origin(*it));
+      double twice = 0;
+      for (std::size_t i = 0; i < ids.size(); ++i) {
+        auto const &a = xy[ids[i]], &b = xy[ids[(i + 1) % ids.size()]];
+        twice += a[0] * b[1] - a[1] * b[0];
+      }
+      cs.emplace_back(-twice, json(ids));
+    }
+    std::sort(cs.begin(), cs.end(), [](auto const& a, auto const& b) { return a.first < b.first; });
+    json jc = json::array();
+    for (auto& c : cs) jc.push_back(std::move(c.second));
+    faces.push_back({{"polygon", m.faces()[f2].label}, {"cycles", std::move(jc)}});
+  }
+  auto v3 = [](svm::vec3 const& v) { return json{v[0], v[1], v[2]}; };
+  auto const& c = view.centre();
+  return {{"view",
+           {{"direction", v3(f)}, {"centre", {d(c.x()), d(c.y()), d(c.z())}}, {"right", v3(right)}, {"up", v3(up)}}},
+          {"vertices", std::move(vertices)},
+          {"faces", std::move(faces)},
+          {"stats", stats_json(vm, l)}};
+}
 
 std::string off_text(svm::scenes::scene const& s) {
   std::ostringstream out;
@@ -534,7 +598,11 @@ int run(int argc, char** argv) {
   map_job mj;
   std::string map_out;
   auto* map = app.add_subcommand("map", "the spherical visibility map of a scene seen from an eye, as MAP.json");
-  mj.add_options(*map);
+  mj.add_options(*map, false);
+  std::string map_view_dir, map_up;
+  map->add_option("--view-dir", map_view_dir,
+                  "or the map of a parallel view along DX,DY,DZ (no --eye; exact): vertices in the view plane's coordinates");
+  map->add_option("--up", map_up, "with --view-dir: the view plane's vertical, X,Y,Z (default 0,0,1, or 0,1,0 when looking along z)");
   map->add_option("-o,--output", map_out, "output MAP.json (- for standard output)")->required();
 
   map_job lj;
@@ -649,6 +717,15 @@ int run(int argc, char** argv) {
     cj.run();
   } else if (*map) {
     auto l = load(mj);
+    if (mj.eye_text.empty() == map_view_dir.empty()) throw usage_error("map: give --eye X,Y,Z or --view-dir DX,DY,DZ");
+    if (!map_up.empty() && map_view_dir.empty()) throw usage_error("--up is for --view-dir");
+    if (!map_view_dir.empty()) {
+      auto polys = polygons_in<rational>(l);
+      auto view = parallel_view(l, polys, map_view_dir, {});
+      auto vm = svm::build<rational>(view.image(polys), view.eye(), parallel_options(mj));
+      write_file(map_out, parallel_map_json(vm, view, map_up, l).dump(1) + "\n");
+      return 0;
+    }
     auto eye = parse_point(mj.eye_text, "--eye");
     auto text = with_map(mj, l, [&](auto const& vm) { return map_json(vm, eye, l).dump(1) + "\n"; });
     write_file(map_out, text);
