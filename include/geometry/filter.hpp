@@ -111,29 +111,17 @@ template <std::size_t N> struct approximation {
   friend bool operator==(approximation const&, approximation const&) = default;
 };
 
-/// Integer coordinates as the exact stages read them: the GMP integers, the
-/// largest bit length among them, and a 64-bit copy when every one is below
-/// 2^63, so that a predicate's rung is chosen without asking GMP.
-template <std::size_t N> struct integer_vector {
-  std::array<integer, N> z;
-  int bits = 0;                    ///< every |z[i]| < 2^bits
-  std::array<std::int64_t, N> z64{}; ///< z, when bits <= 63
+__extension__ using int128 = __int128; ///< exact when no value exceeds 2^126
+__extension__ using uint128 = unsigned __int128;
 
-  integer_vector() = default;
-  explicit integer_vector(std::array<integer, N> v) : z(std::move(v)) {
-    for (auto const& x : z)
-      if (mpz_sgn(x.backend().data()) != 0) bits = std::max(bits, static_cast<int>(mpz_sizeinbase(x.backend().data(), 2)));
-    if (small())
-      for (std::size_t i = 0; i < N; ++i) z64[i] = mpz_get_si(z[i].backend().data());
-  }
-  bool small() const noexcept { return bits <= 63; }
-  integer_vector operator-() const {
-    integer_vector r;
-    r.bits = bits;
-    for (std::size_t i = 0; i < N; ++i) r.z[i] = -z[i], r.z64[i] = -z64[i];
-    return r;
-  }
-};
+/// The bit length of |v|: the least b with |v| < 2^b.
+inline int bit_length128(int128 v) noexcept {
+  uint128 m = v < 0 ? -static_cast<uint128>(v) : static_cast<uint128>(v);
+  auto hi = static_cast<std::uint64_t>(m >> 64), lo = static_cast<std::uint64_t>(m);
+  return hi ? 128 - __builtin_clzll(hi) : lo ? 64 - __builtin_clzll(lo) : 0;
+}
+
+inline void set_integer(integer& z, int128 v);
 
 /// A value made on first use, at most once kept, by any thread: a thread
 /// that finds it absent makes one and publishes it with a compare-exchange;
@@ -145,7 +133,15 @@ public:
   explicit lazy_value(std::unique_ptr<T> v) : p_(v.release()) {}
   lazy_value(lazy_value const&) = delete;
   lazy_value& operator=(lazy_value const&) = delete;
+  /// Moves are for values no other thread sees yet.
+  lazy_value(lazy_value&& o) noexcept : p_(o.p_.exchange(nullptr, std::memory_order_relaxed)) {}
+  lazy_value& operator=(lazy_value&& o) noexcept {
+    if (this != &o) delete p_.exchange(o.p_.exchange(nullptr, std::memory_order_relaxed), std::memory_order_relaxed);
+    return *this;
+  }
   ~lazy_value() { delete p_.load(std::memory_order_relaxed); }
+  /// The value, when it has been made.
+  T const* get_if() const noexcept { return p_.load(std::memory_order_acquire); }
 
   /// The value, made by `make()` (returning a `std::unique_ptr<T>`) when absent.
   template <class Make> T const& get(Make&& make) const {
@@ -159,6 +155,88 @@ public:
 
 private:
   mutable std::atomic<T*> p_{nullptr};
+};
+
+/// Integer coordinates as the exact stages read them: the largest bit
+/// length among them, a 64-bit copy when every one is below 2^63 and a
+/// 128-bit one below 2^126, so that a predicate's rung is chosen and fed
+/// without asking GMP.  Coordinates of 126 bits or fewer have no GMP
+/// integers until something asks for them (`big`): a construction whose
+/// result fits 128 bits allocates nothing.
+template <std::size_t N> struct integer_vector {
+  int bits = 0;                        ///< every |z[i]| < 2^bits
+  std::array<std::int64_t, N> z64{};   ///< the values, when bits <= 63
+  std::array<int128, N> z128{};        ///< the values, when bits <= 126
+
+  integer_vector() = default;
+  explicit integer_vector(std::array<integer, N> v) {
+    for (auto const& x : v)
+      if (mpz_sgn(x.backend().data()) != 0) bits = std::max(bits, static_cast<int>(mpz_sizeinbase(x.backend().data(), 2)));
+    if (mid())
+      for (std::size_t i = 0; i < N; ++i) {
+        mpz_srcptr p = v[i].backend().data();
+        uint128 m = 0;
+        for (std::size_t k = mpz_size(p); k-- > 0;) m = (m << 64) | mpz_getlimbn(p, static_cast<mp_size_t>(k));
+        z128[i] = mpz_sgn(p) < 0 ? -static_cast<int128>(m) : static_cast<int128>(m);
+        z64[i] = static_cast<std::int64_t>(z128[i]);
+      }
+    big_ = lazy_value<std::array<integer, N>>(std::make_unique<std::array<integer, N>>(std::move(v)));
+  }
+  /// Values below 2^126 in magnitude.
+  explicit integer_vector(std::array<int128, N> const& v) : z128(v) {
+    for (auto x : v) bits = std::max(bits, bit_length128(x));
+    for (std::size_t i = 0; i < N; ++i) z64[i] = static_cast<std::int64_t>(v[i]);
+  }
+  integer_vector(integer_vector const& o) : bits(o.bits), z64(o.z64), z128(o.z128) {
+    if (!o.mid()) big_ = lazy_value<std::array<integer, N>>(std::make_unique<std::array<integer, N>>(o.big()));
+  }
+  integer_vector(integer_vector&&) noexcept = default;
+  integer_vector& operator=(integer_vector o) noexcept {
+    bits = o.bits, z64 = o.z64, z128 = o.z128, big_ = std::move(o.big_);
+    return *this;
+  }
+
+  bool small() const noexcept { return bits <= 63; }
+  bool mid() const noexcept { return bits <= 126; }
+
+  /// The values as GMP integers (made on first use when they fit 128 bits).
+  std::array<integer, N> const& big() const {
+    return big_.get([this] {
+      auto z = std::make_unique<std::array<integer, N>>();
+      for (std::size_t i = 0; i < N; ++i) set_integer((*z)[i], z128[i]);
+      return z;
+    });
+  }
+  sign sign_at(std::size_t i) const {
+    if (mid()) return z128[i] < 0 ? sign::negative : z128[i] > 0 ? sign::positive : sign::zero;
+    return static_cast<sign>(mpz_sgn(big()[i].backend().data()));
+  }
+  /// Whether |z[i]| > |z[j]|.
+  bool abs_greater(std::size_t i, std::size_t j) const {
+    if (mid()) {
+      auto abs = [](int128 x) { return x < 0 ? -static_cast<uint128>(x) : static_cast<uint128>(x); };
+      return abs(z128[i]) > abs(z128[j]);
+    }
+    return mpz_cmpabs(big()[i].backend().data(), big()[j].backend().data()) > 0;
+  }
+  friend bool operator==(integer_vector const& a, integer_vector const& b) {
+    if (a.bits != b.bits) return false;
+    if (a.mid()) return a.z128 == b.z128;
+    return a.big() == b.big();
+  }
+  integer_vector operator-() const {
+    if (mid()) {
+      std::array<int128, N> r;
+      for (std::size_t i = 0; i < N; ++i) r[i] = -z128[i];
+      return integer_vector(r);
+    }
+    std::array<integer, N> r;
+    for (std::size_t i = 0; i < N; ++i) r[i] = -big()[i];
+    return integer_vector(std::move(r));
+  }
+
+private:
+  lazy_value<std::array<integer, N>> big_;
 };
 
 /// The coordinates of a vector and of its opposite, kept once and shared by
@@ -187,7 +265,7 @@ public:
   std::array<rational, N> const& rationals(bool negated) const {
     auto const& c = c_.get([this] {
       auto c = std::make_unique<std::array<rational, N>>();
-      for (std::size_t i = 0; i < N; ++i) mpq_set_z((*c)[i].backend().data(), z_.z[i].backend().data());
+      for (std::size_t i = 0; i < N; ++i) mpq_set_z((*c)[i].backend().data(), z_.big()[i].backend().data());
       return c;
     });
     if (!negated) return c;
@@ -249,8 +327,18 @@ template <std::size_t N> void approximate(std::array<integer, N> const& z, appro
   for (double x : a.v) a.norm = std::isnan(x) ? x : std::max(a.norm, std::fabs(x));
 }
 
-__extension__ using int128 = __int128; ///< exact when no value exceeds 2^126
-__extension__ using uint128 = unsigned __int128;
+/// The same from integer coordinates, without GMP when they fit 128 bits.
+template <std::size_t N> void approximate(integer_vector<N> const& z, approximation<N>& a) {
+  if (!z.mid()) return approximate(z.big(), a);
+  a.integral = true;
+  a.norm = 0;
+  for (std::size_t i = 0; i < N; ++i) {
+    a.v[i] = static_cast<double>(z.z128[i]); // rounds to nearest: relative error at most u
+    a.integral = a.integral && bit_length128(z.z128[i]) <= 53;
+    a.norm = std::max(a.norm, std::fabs(a.v[i]));
+  }
+}
+
 
 /// Bounds the bit length of an expression's values: inputs below 2^b.
 struct bits_counter {
@@ -288,6 +376,13 @@ template <std::size_t L> struct wide_integer {
     mpz_srcptr p = z.backend().data();
     for (std::size_t k = 0; k < mpz_size(p) && k < L; ++k) w[k] = mpz_getlimbn(p, static_cast<mp_size_t>(k));
     if (mpz_sgn(p) < 0) *this = -*this;
+  }
+  /// The value of a 128-bit integer.
+  explicit wide_integer(int128 v) noexcept {
+    auto u = static_cast<uint128>(v);
+    w[0] = static_cast<std::uint64_t>(u);
+    if constexpr (L > 1) w[1] = static_cast<std::uint64_t>(u >> 64);
+    for (std::size_t k = 2; k < L; ++k) w[k] = v < 0 ? ~std::uint64_t(0) : 0;
   }
 
   friend wide_integer operator+(wide_integer const& a, wide_integer const& b) noexcept {
@@ -335,9 +430,12 @@ template <std::size_t L> struct wide_integer {
 };
 
 /// `a` as wide integers; every value must be below 2^(64·L−1) in magnitude.
-template <class T, std::size_t N> std::array<T, N> to_fixed(std::array<integer, N> const& a) {
+template <class T, std::size_t N> std::array<T, N> to_fixed(integer_vector<N> const& a) {
   std::array<T, N> r;
-  for (std::size_t i = 0; i < N; ++i) r[i] = T(a[i]);
+  if (a.mid())
+    for (std::size_t i = 0; i < N; ++i) r[i] = T(a.z128[i]);
+  else
+    for (std::size_t i = 0; i < N; ++i) r[i] = T(a.big()[i]);
   return r;
 }
 
@@ -354,10 +452,10 @@ template <class F, std::size_t... N> sign integer_sign(F const& f, integer_vecto
   auto sign_of_value = [](auto const& x) { return x < 0 ? sign::negative : (x > 0 ? sign::positive : sign::zero); };
   if (filter_config().fixed_width) [[likely]] {
     if (bits <= int128_bits && (a.small() && ...)) return sign_of_value(f(to_int128(a)...));
-    if (bits <= fixed256_bits) return to_sign(f(to_fixed<wide_integer<4>>(a.z)...).sign());
-    if (bits <= fixed512_bits) return to_sign(f(to_fixed<wide_integer<8>>(a.z)...).sign());
+    if (bits <= fixed256_bits) return to_sign(f(to_fixed<wide_integer<4>>(a)...).sign());
+    if (bits <= fixed512_bits) return to_sign(f(to_fixed<wide_integer<8>>(a)...).sign());
   }
-  return sign_of(f(a.z...));
+  return sign_of(f(a.big()...));
 }
 template <class F, std::size_t... N> sign integer_sign(F const& f, std::array<integer, N> const&... a) {
   return integer_sign(f, integer_vector<N>(a)...);
@@ -403,18 +501,16 @@ integer_vector<M> integer_construction(F const& f, integer_vector<N> const&... a
   std::array<bits_counter, M> const bound = f(bits_of(a)...);
   int bits = 0;
   for (auto b : bound) bits = std::max(bits, b.b);
-  std::array<integer, M> z;
   if (bits <= int128_bits && (a.small() && ...) && filter_config().fixed_width) {
     std::array<int128, M> r = f(to_int128(a)...);
     uint128 g = 0;
     for (auto x : r) g = gcd(g, x < 0 ? -static_cast<uint128>(x) : static_cast<uint128>(x));
     if (g > 1)
       for (auto& x : r) x /= static_cast<int128>(g);
-    for (std::size_t i = 0; i < M; ++i) set_integer(z[i], r[i]);
-  } else {
-    z = f(a.z...);
-    make_primitive(z);
+    return integer_vector<M>(r);
   }
+  std::array<integer, M> z = f(a.big()...);
+  make_primitive(z);
   return integer_vector<M>(std::move(z));
 }
 
@@ -463,7 +559,7 @@ public:
     requires is_exact
   {
     hvec r;
-    detail::approximate(z.z, r.a_);
+    detail::approximate(z, r.a_);
     r.s_ = std::make_shared<shared const>(std::move(z));
     return r;
   }
@@ -471,8 +567,8 @@ public:
   /// The sign of coordinate `i`, read without making rationals.
   sign sign_at(std::size_t i) const {
     if constexpr (is_exact) {
-      int s = mpz_sgn(s_->integers(false).z[i].backend().data());
-      return static_cast<sign>(negated_ ? -s : s);
+      auto s = s_->integers(false).sign_at(i);
+      return negated_ ? -s : s;
     } else {
       return sign_of(c_[i]);
     }
@@ -480,8 +576,7 @@ public:
   /// Whether `|v[i]| > |v[j]|`, read without making rationals.
   bool abs_greater(std::size_t i, std::size_t j) const {
     if constexpr (is_exact) {
-      auto const& z = s_->integers(false).z;
-      return mpz_cmpabs(z[i].backend().data(), z[j].backend().data()) > 0;
+      return s_->integers(false).abs_greater(i, j);
     } else {
       using std::abs;
       return abs(c_[i]) > abs(c_[j]);
@@ -507,7 +602,7 @@ public:
   std::array<integer, N> const& integers() const
     requires is_exact
   {
-    return s_->integers(negated_).z;
+    return s_->integers(negated_).big();
   }
   /// The same, with its bit length, as the exact stages read it.
   detail::integer_vector<N> const& integer_view() const
@@ -538,7 +633,7 @@ public:
   friend bool operator==(hvec const& a, hvec const& b) {
     if constexpr (is_exact) {
       if (a.s_ == b.s_ && a.negated_ == b.negated_) return true;
-      return a.integer_view().z == b.integer_view().z;
+      return a.integer_view() == b.integer_view();
     } else {
       return a.c_ == b.c_;
     }
