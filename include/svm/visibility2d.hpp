@@ -134,6 +134,25 @@ template <geometry::number FT> bool angle_less(geometry::s1::point<FT> const& u,
   return geometry::det_sign(u, v) == sign::positive;
 }
 
+/// Whether the start point of `h` comes before that of `g` counter-clockwise
+/// from (1, 0), read from their normals (start(n) = (n₁, −n₀), a rotation):
+/// nothing is constructed.
+template <geometry::number FT> bool start_less(geometry::s1::hyperplane<FT> const& h, geometry::s1::hyperplane<FT> const& g) {
+  using geometry::sign;
+  auto half = [](geometry::s1::hyperplane<FT> const& x) {
+    sign n0 = x.n.sign_at(0);
+    return n0 == sign::positive || (n0 == sign::zero && x.n.sign_at(1) == sign::negative);
+  };
+  bool hh = half(h), hg = half(g);
+  if (hh != hg) return hg;
+  return geometry::det_sign(h.n, g.n) == sign::positive;
+}
+
+/// Whether the arc ending at `−start(to)` ends where the one starting at `start(from)` starts.
+template <geometry::number FT> bool meets(geometry::s1::hyperplane<FT> const& to, geometry::s1::hyperplane<FT> const& from) {
+  return geometry::parallel(to.n, from.n) == geometry::sign::negative;
+}
+
 /// Whether `u` and `v` are the same direction.
 template <geometry::number FT> bool same_direction(geometry::s1::point<FT> const& u, geometry::s1::point<FT> const& v) {
   return geometry::parallel(u, v) == geometry::sign::positive;
@@ -203,6 +222,7 @@ public:
       for (auto c : {tree_.negative(n), tree_.positive(n)})
         if (!tree_.is_leaf(c)) b.add(boxes_[c.index()]);
     }
+    for (auto& b : boxes_) b.finish();
     seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   }
 
@@ -291,7 +311,7 @@ public:
       if (auto cone = boxes_[n.index()].seen_from(eye)) {
         store.clear();
         fragment f;
-        for (auto const& b : cone->bounds) f.push_back({&store.emplace_back(b), true});
+        for (auto const& b : *cone) f.push_back({&store.emplace_back(b), true});
         if (pass.hidden(std::move(f))) {
           ++st.culled_subtrees;
           continue;
@@ -307,36 +327,33 @@ public:
     st.coverage_nodes_peak = pass.peak_interior_nodes();
     // Counter-clockwise from (1, 0); touching pieces of one wall join, and
     // gaps are arcs where nothing is seen.
-    auto start = [](piece const& p) { return s1::start_point(p.from); };
-    auto end = [](piece const& p) { return geometry::s1::point<FT>(-s1::start_point(p.to)); };
-    std::sort(visible.begin(), visible.end(), [&](piece const& a, piece const& b) { return detail::angle_less(start(a), start(b)); });
+    auto touch = [](piece const& p, piece const& q) { return detail::meets(p.to, q.from); };
+    std::sort(visible.begin(), visible.end(), [&](piece const& a, piece const& b) { return detail::start_less(a.from, b.from); });
     std::vector<piece> joined;
     for (auto& p : visible) {
-      if (!joined.empty() && joined.back().wall == p.wall && detail::same_direction(end(joined.back()), start(p)))
+      if (!joined.empty() && joined.back().wall == p.wall && touch(joined.back(), p))
         joined.back().to = p.to;
       else
         joined.push_back(std::move(p));
     }
-    if (joined.size() >= 2 && joined.back().wall == joined.front().wall &&
-        detail::same_direction(end(joined.back()), start(joined.front()))) {
+    if (joined.size() >= 2 && joined.back().wall == joined.front().wall && touch(joined.back(), joined.front())) {
       joined.front().from = joined.back().from;
       joined.pop_back();
     }
     if (joined.empty()) {
       out.arcs.push_back({{}, {}, no_wall, true});
-    } else if (joined.size() == 1 && detail::same_direction(end(joined[0]), start(joined[0]))) {
+    } else if (joined.size() == 1 && touch(joined[0], joined[0])) {
       out.arcs.push_back({joined[0].from, joined[0].to, joined[0].wall, true});
     } else {
       for (std::size_t i = 0; i < joined.size(); ++i) {
         auto const& p = joined[i];
         out.arcs.push_back({p.from, p.to, p.wall, false});
         auto const& q = joined[(i + 1) % joined.size()];
-        if (!detail::same_direction(end(p), start(q))) out.arcs.push_back({p.to.opposite(), q.from.opposite(), no_wall, false});
+        if (!touch(p, q)) out.arcs.push_back({p.to.opposite(), q.from.opposite(), no_wall, false});
       }
     }
     // An arc across (1, 0), and the gap after it, start late: order by start.
-    std::sort(out.arcs.begin(), out.arcs.end(),
-              [](view_arc<FT> const& a, view_arc<FT> const& b) { return detail::angle_less(a.start(), b.start()); });
+    std::sort(out.arcs.begin(), out.arcs.end(), [](view_arc<FT> const& a, view_arc<FT> const& b) { return detail::start_less(a.from, b.from); });
     st.arcs = out.arcs.size();
     st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return out;
@@ -362,33 +379,39 @@ private:
       add(geometry::e2::point<FT>((*o.b)[0], (*o.b)[1]));
       add(geometry::e2::point<FT>((*o.b)[2], (*o.b)[3]));
     }
-    /// The arc of directions from `eye` to the box (less than a half circle),
-    /// between the rays through two of its corners; nothing when the eye is
-    /// in the closed box.
-    std::optional<geometry::s1::polytope<FT>> seen_from(geometry::e2::point<FT> const& eye) const {
-      using geometry::sign;
+    /// Its corners as points, counter-clockwise from (xmin, ymin), once the box is final.
+    void finish() {
+      if (!b) return;
+      auto const& v = *b;
+      corner = {geometry::e2::point<FT>(v[0], v[1]), geometry::e2::point<FT>(v[2], v[1]), geometry::e2::point<FT>(v[2], v[3]),
+                geometry::e2::point<FT>(v[0], v[3])};
+    }
+    /// The bounds of the arc of directions from `eye` to the box (less than
+    /// a half circle): the lines through the eye and the two corners where
+    /// the box's outline turns, found from the eye's place among the box's
+    /// sides; nothing when the eye is in the closed box.
+    std::optional<std::array<geometry::s1::hyperplane<FT>, 2>> seen_from(geometry::e2::point<FT> const& eye) const {
       if (!b) return std::nullopt;
       auto const& v = *b;
-      if (v[0] <= eye.x() && eye.x() <= v[2] && v[1] <= eye.y() && eye.y() <= v[3]) return std::nullopt;
-      std::array<geometry::s1::point<FT>, 4> c;
-      std::array<std::array<FT, 2>, 4> xy{{{v[0], v[1]}, {v[2], v[1]}, {v[2], v[3]}, {v[0], v[3]}}};
-      for (std::size_t i = 0; i < 4; ++i) c[i] = geometry::s1::point<FT>(std::array<FT, 2>{FT(xy[i][0] - eye.x()), FT(xy[i][1] - eye.y())});
-      // The first corner has every other counter-clockwise of it (or on its ray), the last every other clockwise.
-      auto extreme = [&](bool first) -> std::size_t {
-        for (std::size_t i = 0; i < 4; ++i) {
-          bool ok = true;
-          for (std::size_t j = 0; j < 4 && ok; ++j) {
-            sign t = first ? geometry::det_sign(c[i], c[j]) : geometry::det_sign(c[j], c[i]);
-            ok = t != sign::negative;
-          }
-          if (ok) return i;
-        }
-        return 4;
+      int cx = eye.x() < v[0] ? -1 : eye.x() > v[2] ? 1 : 0, cy = eye.y() < v[1] ? -1 : eye.y() > v[3] ? 1 : 0;
+      if (cx == 0 && cy == 0) return std::nullopt;
+      // The corner with every other counter-clockwise of it, and the one with every other clockwise.
+      static constexpr int first[3][3] = {{1, 0, 0}, {1, -1, 3}, {2, 2, 3}}, last[3][3] = {{3, 3, 2}, {0, -1, 2}, {0, 1, 1}};
+      auto const& p = corner[static_cast<std::size_t>(first[cx + 1][cy + 1])];
+      auto const& q = corner[static_cast<std::size_t>(last[cx + 1][cy + 1])];
+      // (−(p−O)y, (p−O)x) and ((q−O)y, −(q−O)x) on homogeneous points: the
+      // positive sides are counter-clockwise of p and clockwise of q.
+      auto start = [](auto const& P, auto const& E) {
+        return std::array<std::remove_cvref_t<decltype(P[0])>, 2>{E[1] * P[2] - P[1] * E[2], P[0] * E[2] - E[0] * P[2]};
       };
-      std::size_t a = extreme(true), z = extreme(false);
-      if (a == 4 || z == 4 || geometry::det_sign(c[a], c[z]) != sign::positive) return std::nullopt;
-      return geometry::s1::arc(c[a], c[z]);
+      auto end = [](auto const& P, auto const& E) {
+        return std::array<std::remove_cvref_t<decltype(P[0])>, 2>{P[1] * E[2] - E[1] * P[2], E[0] * P[2] - P[0] * E[2]};
+      };
+      return std::array<geometry::s1::hyperplane<FT>, 2>{
+          geometry::s1::hyperplane<FT>(geometry::construct<2>(start, p.homogeneous(), eye.homogeneous())),
+          geometry::s1::hyperplane<FT>(geometry::construct<2>(end, q.homogeneous(), eye.homogeneous()))};
     }
+    std::array<geometry::e2::point<FT>, 4> corner;
   };
 
   struct no_cut {
