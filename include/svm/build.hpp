@@ -141,6 +141,23 @@ template <class Hyperplane> struct flagged_bound {
 };
 template <geometry::number FT> using sphere_bound = flagged_bound<geometry::s2::hyperplane<FT>>;
 
+/// The hyperplane through the eye O and the meeting of hyperplanes P and B
+/// (the line P ∩ B in E3, the point P ∩ B in E2), P(O)·B − B(O)·P, as the
+/// first `M` coordinates of its normal: a circle of directions (M = 3) or a
+/// point pair (M = 2), turned round when `flip`.  One formula for every
+/// view: degree deg P + deg B + 1 in the input.
+template <std::size_t M> auto through_eye(bool flip) {
+  return [flip](auto const& P, auto const& B, auto const& O) {
+    auto po = geometry::dot(P, O), bo = geometry::dot(B, O);
+    std::array<std::remove_cvref_t<decltype(P[0])>, M> n;
+    for (std::size_t i = 0; i < M; ++i) {
+      auto q = po * B[i] - bo * P[i];
+      n[i] = flip ? -q : q;
+    }
+    return n;
+  };
+}
+
 /// The fragment of an E3 polygon as seen from the eye: each bound B of the
 /// polygon (in the plane P) becomes the circle of the plane through the eye
 /// and the line P ∩ B: `P(O)·B − B(O)·P`, whose normal has degree
@@ -151,16 +168,7 @@ std::vector<sphere_bound<FT>> project(geometry::e3::sub_hyperplane<FT> const& f,
                                       circle_store<FT>& store) {
   auto const& P = f.support.n;
   auto const& o = eye.homogeneous();
-  bool flip = geometry::dot_sign(P, o) == geometry::sign::negative;
-  auto circle = [flip](auto const& P, auto const& B, auto const& O) {
-    auto po = geometry::dot(P, O), bo = geometry::dot(B, O);
-    std::array<std::remove_cvref_t<decltype(P[0])>, 3> n;
-    for (std::size_t i = 0; i < 3; ++i) {
-      auto q = po * B[i] - bo * P[i];
-      n[i] = flip ? -q : q;
-    }
-    return n;
-  };
+  auto circle = through_eye<3>(geometry::dot_sign(P, o) == geometry::sign::negative);
   std::vector<sphere_bound<FT>> out;
   out.reserve(f.bounds.size());
   for (auto const& b : f.bounds)

@@ -271,16 +271,7 @@ public:
       // Each end of the fragment seen from the eye: the line through the eye
       // and the point P ∩ B, P(O)·B − B(O)·P, its normal as a point pair
       // whose positive side holds the fragment.
-      bool flip = po == sign::negative;
-      auto ray = [flip](auto const& P, auto const& B, auto const& O) {
-        auto pb = geometry::dot(P, O), bb = geometry::dot(B, O);
-        std::array<std::remove_cvref_t<decltype(P[0])>, 2> n;
-        for (std::size_t i = 0; i < 2; ++i) {
-          auto q = pb * B[i] - bb * P[i];
-          n[i] = flip ? -q : q;
-        }
-        return n;
-      };
+      auto ray = detail::through_eye<2>(po == sign::negative);
       store.clear();
       fragment f;
       for (auto const& b : fr.piece.bounds)
@@ -363,25 +354,31 @@ private:
   /// An axis-aligned box of input points, exact.
   struct box {
     std::optional<std::array<FT, 4>> b; ///< xmin, ymin, xmax, ymax
-    void add(geometry::e2::point<FT> const& p) {
+    std::size_t fragments = 0;          ///< in the subtree
+    void add(FT const& x0, FT const& y0, FT const& x1, FT const& y1) {
       if (!b) {
-        b = std::array<FT, 4>{p.x(), p.y(), p.x(), p.y()};
+        b = std::array<FT, 4>{x0, y0, x1, y1};
         return;
       }
       auto& v = *b;
-      if (p.x() < v[0]) v[0] = p.x();
-      if (p.y() < v[1]) v[1] = p.y();
-      if (p.x() > v[2]) v[2] = p.x();
-      if (p.y() > v[3]) v[3] = p.y();
+      if (x0 < v[0]) v[0] = x0;
+      if (y0 < v[1]) v[1] = y0;
+      if (x1 > v[2]) v[2] = x1;
+      if (y1 > v[3]) v[3] = y1;
+    }
+    void add(geometry::e2::point<FT> const& p) {
+      add(p.x(), p.y(), p.x(), p.y());
+      ++fragments;
     }
     void add(box const& o) {
-      if (!o.b) return;
-      add(geometry::e2::point<FT>((*o.b)[0], (*o.b)[1]));
-      add(geometry::e2::point<FT>((*o.b)[2], (*o.b)[3]));
+      if (o.b) add((*o.b)[0], (*o.b)[1], (*o.b)[2], (*o.b)[3]);
+      fragments += o.fragments;
     }
+    /// Subtrees of fewer fragments are not worth a test: their fragments go in.
+    static constexpr std::size_t least_tested = 8;
     /// Its corners as points, counter-clockwise from (xmin, ymin), once the box is final.
     void finish() {
-      if (!b) return;
+      if (!b || fragments < least_tested) return;
       auto const& v = *b;
       corner = {geometry::e2::point<FT>(v[0], v[1]), geometry::e2::point<FT>(v[2], v[1]), geometry::e2::point<FT>(v[2], v[3]),
                 geometry::e2::point<FT>(v[0], v[3])};
@@ -391,7 +388,7 @@ private:
     /// the box's outline turns, found from the eye's place among the box's
     /// sides; nothing when the eye is in the closed box.
     std::optional<std::array<geometry::s1::hyperplane<FT>, 2>> seen_from(geometry::e2::point<FT> const& eye) const {
-      if (!b) return std::nullopt;
+      if (!b || fragments < least_tested) return std::nullopt;
       auto const& v = *b;
       int cx = eye.x() < v[0] ? -1 : eye.x() > v[2] ? 1 : 0, cy = eye.y() < v[1] ? -1 : eye.y() > v[3] ? 1 : 0;
       if (cx == 0 && cy == 0) return std::nullopt;

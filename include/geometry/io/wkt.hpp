@@ -80,7 +80,8 @@ template <class F> void wkt_list(wkt_lexer& lx, F&& item) {
   }
 }
 
-inline ring wkt_ring(wkt_lexer& lx) {
+/// A list of positions `(x y, …)`, or `EMPTY`.
+inline ring wkt_positions(wkt_lexer& lx) {
   ring r;
   wkt_list(lx, [&] {
     rational x = wkt_number(lx), y = wkt_number(lx);
@@ -88,6 +89,11 @@ inline ring wkt_ring(wkt_lexer& lx) {
     if (s != "," && s != ")") lx.fail("a vertex has more than two coordinates");
     r.emplace_back(std::move(x), std::move(y));
   });
+  return r;
+}
+
+inline ring wkt_ring(wkt_lexer& lx) {
+  ring r = wkt_positions(lx);
   if (!r.empty() && r.size() < 4) lx.fail("a ring needs at least 4 positions (3 vertices and the first repeated)");
   if (!r.empty() && !(r.front() == r.back())) lx.fail("a ring is not closed: its last position differs from its first");
   if (!r.empty()) r.pop_back();
@@ -110,13 +116,7 @@ inline void wkt_polygon(wkt_lexer& lx, multipolygon& out) {
 
 /// An open path: at least two positions.
 inline ring wkt_path(wkt_lexer& lx) {
-  ring r;
-  wkt_list(lx, [&] {
-    rational x = wkt_number(lx), y = wkt_number(lx);
-    auto s = lx.peek();
-    if (s != "," && s != ")") lx.fail("a vertex has more than two coordinates");
-    r.emplace_back(std::move(x), std::move(y));
-  });
+  ring r = wkt_positions(lx);
   if (r.size() == 1) lx.fail("a line string needs at least 2 positions");
   return r;
 }
