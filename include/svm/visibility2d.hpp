@@ -13,8 +13,12 @@
 /// eye covers no direction and is left out.  Walls of polygon rings (the
 /// inside on their left: outer rings counter-clockwise, holes clockwise)
 /// also tell which way the eye looks when it lies on them: on a ring's edge,
-/// into the inside; at a ring's vertex, into the inside's wedge there.
-/// Directions out of the polygon see nothing (`behind_boundary`).
+/// into the inside; at a ring's vertex, into the inside's wedge there; on
+/// the boundaries of several polygons (rooms side by side), into each.
+/// Directions out of them see nothing (`behind_boundary`).  At a vertex
+/// whose two neighbours coincide (the tip of a spike or of a crack) the
+/// inside's wedge is taken to be empty, as at a spike: walls that the eye
+/// must see both sides of are line strings.
 #pragma once
 
 #include "build.hpp"
@@ -40,6 +44,10 @@ namespace svm {
 template <geometry::number FT> struct wall_scene {
   std::vector<std::vector<geometry::e2::point<FT>>> rings;
   std::vector<std::array<geometry::e2::point<FT>, 2>> segments;
+  /// The polygon of each ring (an outer ring and its holes share one), for
+  /// an eye on the boundary of several: it looks into each polygon whose
+  /// boundary it lies on, and out of none.  Empty: every ring is a polygon.
+  std::vector<std::size_t> ring_polygon;
 
   /// The ends of wall `i`.
   std::array<geometry::e2::point<FT>, 2> wall(std::size_t i) const {
@@ -61,8 +69,9 @@ inline constexpr std::int64_t no_wall = -1;         ///< nothing in those direct
 inline constexpr std::int64_t behind_boundary = -2; ///< the eye is on a ring and those directions leave its inside
 
 /// A maximal arc of directions from the eye in which one wall is seen: from
-/// `start_point(from)` counter-clockwise to `−start_point(to)` (the whole
-/// circle when `whole`).  Each is a line through the eye, input-derived.
+/// `start_point(from)` counter-clockwise to `−start_point(to)`, each a line
+/// through the eye, input-derived; or the whole circle when `whole` (then
+/// `from` and `to` are zero and mean nothing).
 template <geometry::number FT> struct view_arc {
   geometry::s1::hyperplane<FT> from, to;
   std::int64_t wall = no_wall;
@@ -90,7 +99,8 @@ template <geometry::number FT> struct visibility_region {
   std::vector<view_arc<FT>> arcs;
   visibility2d_statistics stats;
 
-  /// Whether a wall bounds the view in every direction.
+  /// Whether the view is bounded in every direction: by a wall, or by the
+  /// boundary the eye lies on (`behind_boundary`).
   bool bounded() const {
     return std::none_of(arcs.begin(), arcs.end(), [](auto const& a) { return a.wall == no_wall; });
   }
@@ -217,8 +227,10 @@ public:
         continue;
       }
       auto& b = boxes_[n.index()];
-      for (auto const& fr : tree_.node_data(n))
+      for (auto const& fr : tree_.node_data(n)) {
         for (auto const& p : scene_.wall(fr.id)) b.add(p);
+        ++b.fragments;
+      }
       for (auto c : {tree_.negative(n), tree_.positive(n)})
         if (!tree_.is_leaf(c)) b.add(boxes_[c.index()]);
     }
@@ -366,10 +378,7 @@ private:
       if (x1 > v[2]) v[2] = x1;
       if (y1 > v[3]) v[3] = y1;
     }
-    void add(geometry::e2::point<FT> const& p) {
-      add(p.x(), p.y(), p.x(), p.y());
-      ++fragments;
-    }
+    void add(geometry::e2::point<FT> const& p) { add(p.x(), p.y(), p.x(), p.y()); }
     void add(box const& o) {
       if (o.b) add((*o.b)[0], (*o.b)[1], (*o.b)[2], (*o.b)[3]);
       fragments += o.fragments;
@@ -415,14 +424,24 @@ private:
     template <class Items> std::optional<geometry::e2::hyperplane<FT>> operator()(Items const&) const { return std::nullopt; }
   };
 
-  /// The arcs of directions that leave the inside of a ring the eye lies on.
+  /// The arcs of directions that leave the polygons whose boundary the eye
+  /// lies on: for each polygon, the union of what its rings' edges and
+  /// vertices at the eye leave out; of several polygons, what all of them do.
   std::vector<geometry::s1::polytope<FT>> blocked(geometry::e2::point<FT> const& eye) const {
     using namespace geometry;
-    std::vector<s1::polytope<FT>> out;
+    std::vector<std::pair<std::size_t, std::vector<s1::polytope<FT>>>> per; // polygon, its arcs
+    std::vector<s1::point<FT>> critical; // the directions of the edges at the eye
     auto dir = [&](e2::point<FT> const& p) {
       return s1::point<FT>(std::array<FT, 2>{FT(p.x() - eye.x()), FT(p.y() - eye.y())});
     };
-    for (auto const& r : scene_.rings) {
+    for (std::size_t ri = 0; ri < scene_.rings.size(); ++ri) {
+      auto const& r = scene_.rings[ri];
+      std::size_t polygon = ri < scene_.ring_polygon.size() ? scene_.ring_polygon[ri] : ri;
+      auto arcs_of = [&]() -> std::vector<s1::polytope<FT>>& {
+        for (auto& [q, arcs] : per)
+          if (q == polygon) return arcs;
+        return per.emplace_back(polygon, std::vector<s1::polytope<FT>>{}).second;
+      };
       std::size_t k = r.size();
       for (std::size_t i = 0; i < k; ++i) {
         auto const &a = r[i], &b = r[(i + 1) % k];
@@ -432,14 +451,43 @@ private:
           std::size_t j = (i + k - 1) % k;
           while (j != i && r[j] == eye) j = (j + k - 1) % k;
           auto more = detail::arcs_between(dir(r[j]), dir(b));
-          out.insert(out.end(), more.begin(), more.end());
+          auto& arcs = arcs_of();
+          arcs.insert(arcs.end(), more.begin(), more.end());
+          critical.push_back(dir(r[j]));
+          critical.push_back(dir(b));
           continue;
         }
         if (b == eye || e2::orientation(a, b, eye) != sign::zero) continue;
         auto da = dir(a), db = dir(b);
         if (dot_sign(da, db) != sign::negative) continue; // on the line, not between the ends
         // Inside an edge: the half circle on its right, from a − b to b − a.
-        out.push_back({{s1::hyperplane_at(da)}});
+        arcs_of().push_back({{s1::hyperplane_at(da)}});
+        critical.push_back(da);
+        critical.push_back(db);
+      }
+    }
+    if (per.size() <= 1) return per.empty() ? std::vector<s1::polytope<FT>>{} : std::move(per[0].second);
+    // Several polygons: between consecutive edge directions every polygon
+    // either blocks all directions or none; a sector is blocked when each
+    // polygon blocks a direction strictly inside it.
+    std::sort(critical.begin(), critical.end(), [](auto const& u, auto const& v) { return detail::angle_less(u, v); });
+    critical.erase(std::unique(critical.begin(), critical.end(), [](auto const& u, auto const& v) { return detail::same_direction(u, v); }),
+                   critical.end());
+    std::vector<s1::polytope<FT>> out;
+    for (std::size_t i = 0; i < critical.size(); ++i) {
+      auto const &p = critical[i], &q = critical[(i + 1) % critical.size()];
+      sign turn = det_sign(p, q);
+      s1::point<FT> t = turn == sign::positive                               ? s1::point<FT>(std::array<FT, 2>{FT(p[0] + q[0]), FT(p[1] + q[1])})
+                        : turn == sign::negative                             ? s1::point<FT>(std::array<FT, 2>{FT(-p[0] - q[0]), FT(-p[1] - q[1])})
+                        : dot_sign(p, q) == sign::negative ? s1::point<FT>(std::array<FT, 2>{FT(-p[1]), p[0]})
+                                                           : s1::point<FT>(-p);
+      bool all = std::all_of(per.begin(), per.end(), [&](auto const& pa) {
+        return std::any_of(pa.second.begin(), pa.second.end(),
+                           [&](s1::polytope<FT> const& arc) { return s1::classify(arc, t) == oriented_side::positive; });
+      });
+      if (all) {
+        auto more = detail::arcs_between(p, q);
+        out.insert(out.end(), more.begin(), more.end());
       }
     }
     return out;

@@ -338,3 +338,33 @@ TEST_CASE("Walls in a row hide one another; no room leaves the view unbounded", 
   CHECK(seen == std::vector<std::int64_t>{0, 1, 1});
   CHECK(v.stats.hidden_pieces >= 1);
 }
+
+TEST_CASE("An eye on the boundaries of several polygons looks into each; at a hole's corner in the room's, into neither",
+          "[visibility2d]") {
+  using Q = rational;
+  // Two unit squares side by side, two polygons; the eye in the middle of the edge they share.
+  svm::wall_scene<Q> rooms;
+  rooms.rings.push_back({point(Q(0), Q(0)), point(Q(1), Q(0)), point(Q(1), Q(1)), point(Q(0), Q(1))});
+  rooms.rings.push_back({point(Q(1), Q(0)), point(Q(2), Q(0)), point(Q(2), Q(1)), point(Q(1), Q(1))});
+  rooms.ring_polygon = {0, 1};
+  auto v = svm::visibility(rooms, point(Q(1), Q(1, 2)));
+  REQUIRE(v.bounded());
+  CHECK(*svm::area(v, rooms) == Q(2));
+  // The same rings as one polygon (an outer ring and a hole would be; here two
+  // outer rings of one polygon): only directions inside both are open, none.
+  rooms.ring_polygon = {0, 0};
+  auto w = svm::visibility(rooms, point(Q(1), Q(1, 2)));
+  CHECK(*svm::area(w, rooms) == Q(0));
+  // A room [0,4]² with a square hole [0,1]² in its corner (clockwise): at
+  // the shared corner (0,0) the hole fills the room's wedge, and nothing is
+  // open; from (2,0) on the room's wall the eye sees the room but the hole
+  // and its shadow, the triangle (0,1) (1,1) (0,2): 16 − 1 − 1/2.
+  svm::wall_scene<Q> corner;
+  corner.rings.push_back({point(Q(0), Q(0)), point(Q(4), Q(0)), point(Q(4), Q(4)), point(Q(0), Q(4))});
+  corner.rings.push_back({point(Q(0), Q(0)), point(Q(0), Q(1)), point(Q(1), Q(1)), point(Q(1), Q(0))});
+  corner.ring_polygon = {0, 0};
+  auto c = svm::visibility(corner, point(Q(0), Q(0)));
+  CHECK(*svm::area(c, corner) == Q(0));
+  auto c2 = svm::visibility(corner, point(Q(2), Q(0)));
+  CHECK(*svm::area(c2, corner) == Q(29, 2));
+}

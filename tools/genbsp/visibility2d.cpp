@@ -74,6 +74,7 @@ loaded_walls load(std::string const& file) {
         out.names.push_back({{"polygon", k}, {"ring", r}, {"edge", edge}});
       }
       out.scene.rings.push_back(std::move(ring));
+      out.scene.ring_polygon.push_back(k);
     }
   }
   for (std::size_t k = 0; k < in.lines.size(); ++k) {
@@ -114,7 +115,7 @@ std::string svg_of(walls const& s, std::vector<point2> const& boundary, point2 c
     << ' ' << height << "\">\n";
   o << "<path id=\"visible\" fill=\"#f3d36b\" fill-opacity=\"0.8\" stroke=\"#b08a10\" stroke-width=\"1\" d=\"";
   for (std::size_t i = 0; i < boundary.size(); ++i) o << (i ? " L" : "M") << px(boundary[i]);
-  o << " Z\"/>\n<g id=\"walls\" stroke=\"#222\" stroke-width=\"2\" stroke-linecap=\"round\">\n";
+  o << (boundary.empty() ? "" : " Z") << "\"/>\n<g id=\"walls\" stroke=\"#222\" stroke-width=\"2\" stroke-linecap=\"round\">\n";
   for (std::size_t i = 0; i < s.wall_count(); ++i) {
     auto w2 = s.wall(i);
     auto a = px(w2[0]), b = px(w2[1]);
@@ -161,6 +162,7 @@ void visibility2d_job::run() const {
     std::size_t ring_walls = 0;
     for (auto const& r : in.scene.rings) ring_walls += r.size();
     in.scene.rings.push_back({point2(x0, y0), point2(x1, y0), point2(x1, y1), point2(x0, y1)});
+    in.scene.ring_polygon.push_back(in.scene.ring_polygon.empty() ? 0 : in.scene.ring_polygon.back() + 1);
     std::vector<json> box_names;
     for (int j = 0; j < 4; ++j) box_names.push_back({{"box", j}});
     in.names.insert(in.names.begin() + static_cast<std::ptrdiff_t>(ring_walls), box_names.begin(), box_names.end());
@@ -196,12 +198,14 @@ void visibility2d_job::run() const {
   auto boundary = svm::boundary(region, in.scene);
   auto area = svm::area(region, in.scene);
   if (!boundary || !area) throw std::logic_error("visibility2d: the view inside a box is unbounded");
+  // An eye that sees no area (on a spike's tip, say) has a region of one point: written empty.
+  if (boundary->size() < 3) boundary->clear();
   std::string text;
   if (ext == ".svg") {
     text = svg_of(in.scene, *boundary, o);
   } else if (geojson) {
     json ring = json::array();
-    for (std::size_t i = 0; i <= boundary->size(); ++i) {
+    for (std::size_t i = 0; !boundary->empty() && i <= boundary->size(); ++i) {
       auto const& p = (*boundary)[i % boundary->size()];
       ring.push_back({p.x().convert_to<double>(), p.y().convert_to<double>()});
     }
@@ -215,7 +219,7 @@ void visibility2d_job::run() const {
                         {"to", {q.x().convert_to<double>(), q.y().convert_to<double>()}}});
     }
     json f = {{"type", "Feature"},
-              {"geometry", {{"type", "Polygon"}, {"coordinates", json::array({ring})}}},
+              {"geometry", {{"type", "Polygon"}, {"coordinates", boundary->empty() ? json::array() : json::array({ring})}}},
               {"properties",
                {{"eye", {o.x().convert_to<double>(), o.y().convert_to<double>()}},
                 {"area", area->convert_to<double>()},
@@ -229,7 +233,7 @@ void visibility2d_job::run() const {
       if (i) s += ", ";
       s += num(p.x()) + ' ' + num(p.y());
     }
-    text = s + "))\n";
+    text = boundary->empty() ? "POLYGON EMPTY\n" : s + "))\n";
   }
   write_file(output, text);
   auto const& st = region.stats;
