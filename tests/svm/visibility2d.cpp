@@ -39,6 +39,7 @@ svm::wall_scene<rational> to_scene(iscene const& s) {
     for (auto q : r) out.rings.back().push_back(p(q));
   }
   for (auto const& g : s.segments) out.segments.push_back({p(g[0]), p(g[1])});
+  out.ring_polygon.assign(out.rings.size(), 0); // a room and its holes: one polygon, as the ray caster reads them
   return out;
 }
 
