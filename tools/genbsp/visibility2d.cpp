@@ -228,7 +228,7 @@ void visibility2d_job::run() const {
     text = f.dump() + "\n";
   } else {
     std::string s = "POLYGON ((";
-    for (std::size_t i = 0; i <= boundary->size(); ++i) {
+    for (std::size_t i = 0; !boundary->empty() && i <= boundary->size(); ++i) {
       auto const& p = (*boundary)[i % boundary->size()];
       if (i) s += ", ";
       s += num(p.x()) + ' ' + num(p.y());
