@@ -344,6 +344,21 @@ assert {"polygon": 0, "ring": 0, "edge": 1} in walls, walls   # the far wall x =
 "$genbsp" visibility2d "$work/room.wkt" --eye 0,5 -o "$work/vis-edge.svg" >"$work/summary"
 check "visibility2d: an eye on the room's wall looks in" python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); assert 0 < d["area"] < 96' "$work/summary"
 check "visibility2d: SVG with the region and the walls" grep -q 'id="visible"' "$work/vis-edge.svg"
+# --eyes: the walls' tree once, a polygon per eye, the same answers as one eye at a time.
+printf '# eyes\n1 5\n0,5\n' >"$work/eyes.txt"
+"$genbsp" visibility2d "$work/room.wkt" --eyes "$work/eyes.txt" -o "$work/many.wkt" >"$work/summary"
+"$genbsp" visibility2d "$work/room.wkt" --eye 0,5 -o "$work/one.wkt" >"$work/summary-one"
+check "visibility2d --eyes: two views, the first of area 76" python3 -c '
+import json, sys
+d = json.load(open(sys.argv[1])); one = json.load(open(sys.argv[2]))
+assert d["eyes"] == 2 and d["views"][0]["area_exact"] == "76" and d["views"][1]["area_exact"] == one["area_exact"], (d, one)
+' "$work/summary" "$work/summary-one"
+check "visibility2d --eyes: a GEOMETRYCOLLECTION holding the single view's polygon" grep -qF "$(cat "$work/one.wkt")" "$work/many.wkt"
+"$genbsp" visibility2d "$work/room.wkt" --eyes - -o "$work/many.geojson" <"$work/eyes.txt" >/dev/null
+check "visibility2d --eyes -: a FeatureCollection from standard input" python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); assert d["type"] == "FeatureCollection" and len(d["features"]) == 2' "$work/many.geojson"
+printf '1 5\n0 x\n' >"$work/bad-eyes.txt"
+expect_error "visibility2d --eyes: a bad line" "bad-eyes.txt:2: " "$genbsp" visibility2d "$work/room.wkt" --eyes "$work/bad-eyes.txt" -o "$work/x.wkt"
+expect_error "visibility2d: neither --eye nor --eyes" "--eyes" "$genbsp" visibility2d "$work/room.wkt" -o "$work/x.wkt"
 printf 'MULTIPOLYGON (((0 0, 1 0, 1 1, 0 1, 0 0)), ((1 0, 2 0, 2 1, 1 1, 1 0)))\n' >"$work/two-rooms.wkt"
 "$genbsp" visibility2d "$work/two-rooms.wkt" --eye 1,0.5 -o "$work/two.wkt" >"$work/summary"
 check "visibility2d: an eye on the wall between two rooms looks into both" test "$(summary_field area_exact <"$work/summary")" = "2"

@@ -13,6 +13,8 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <sstream>
 
 namespace genbsp_tool {
@@ -129,6 +131,37 @@ std::string svg_of(walls const& s, std::vector<point2> const& boundary, point2 c
   return o.str();
 }
 
+/// The eyes of a file (or "-", standard input): one "x y" or "x,y" a line,
+/// exact; "#" starts a comment.
+std::vector<point2> read_eyes(std::string const& path) {
+  std::ifstream file;
+  std::istream* in = &std::cin;
+  if (path != "-") {
+    file.open(path);
+    if (!file) throw usage_error(path + ": cannot open");
+    in = &file;
+  }
+  std::string name = path == "-" ? "<stdin>" : path;
+  std::vector<point2> out;
+  std::string line;
+  for (std::size_t number = 1; std::getline(*in, line); ++number) {
+    if (auto hash = line.find('#'); hash != std::string::npos) line.erase(hash);
+    for (auto& c : line)
+      if (c == ',') c = ' ';
+    std::istringstream words(line);
+    std::vector<std::string> w{std::istream_iterator<std::string>(words), {}};
+    if (w.empty()) continue;
+    if (w.size() != 2) throw usage_error(name + ":" + std::to_string(number) + ": expected 'x y'");
+    try {
+      out.emplace_back(geometry::parse_number<rational>(w[0]), geometry::parse_number<rational>(w[1]));
+    } catch (geometry::parse_error const& e) {
+      throw usage_error(name + ":" + std::to_string(number) + ": " + e.what());
+    }
+  }
+  if (out.empty()) throw usage_error(name + ": no eye");
+  return out;
+}
+
 } // namespace
 
 void visibility2d_job::add_to(CLI::App& app) {
@@ -137,7 +170,10 @@ void visibility2d_job::add_to(CLI::App& app) {
                       "walls: a WKT or GeoJSON file of polygons (with holes) and line strings; every edge is an opaque wall, and "
                       "an eye on a polygon's boundary looks into the polygon")
       ->required();
-  command->add_option("--eye", eye, "the point X,Y that looks around (exact decimals)")->required();
+  command->add_option("--eye", eye, "the point X,Y that looks around (exact decimals)");
+  command->add_option("--eyes", eyes,
+                      "or a file of eyes, one 'x y' a line (- for standard input): the walls' tree is built once, and the output "
+                      "holds one polygon per eye (WKT GEOMETRYCOLLECTION or GeoJSON FeatureCollection), the summary one entry per eye");
   command->add_option("--box", box,
                       "XMIN,YMIN,XMAX,YMAX: a room around everything that bounds the view; without it an unbounded view is "
                       "clipped to a box twice the scene's size and reported as \"bounded\": false");
@@ -152,8 +188,16 @@ void visibility2d_job::run() const {
   bool geojson = ext == ".geojson" || ext == ".json";
   if (ext != ".wkt" && !geojson && ext != ".svg")
     throw usage_error(output + ": unknown output format '" + ext + "' (use .wkt, .geojson or .svg)");
-  auto e = numbers(eye, 2, "--eye", "two numbers X,Y");
-  point2 o(e[0], e[1]);
+  if (eye.empty() == eyes.empty()) throw usage_error("visibility2d: give --eye X,Y or --eyes FILE");
+  bool const batch = !eyes.empty();
+  if (batch && ext == ".svg") throw usage_error("--eyes: one polygon per eye goes to .wkt or .geojson, not .svg");
+  std::vector<point2> os;
+  if (!batch) {
+    auto e = numbers(eye, 2, "--eye", "two numbers X,Y");
+    os.emplace_back(e[0], e[1]);
+  } else {
+    os = read_eyes(eyes);
+  }
   auto in = load(scene);
   // Ring walls come first in the scene's numbering, then segments: the
   // names were made in that order.
@@ -171,46 +215,66 @@ void visibility2d_job::run() const {
   if (!box.empty()) {
     auto b = numbers(box, 4, "--box", "four numbers XMIN,YMIN,XMAX,YMAX");
     if (!(b[0] < b[2] && b[1] < b[3])) throw usage_error("--box: expected XMIN < XMAX and YMIN < YMAX, got '" + box + "'");
-    if (o.x() < b[0] || o.x() > b[2] || o.y() < b[1] || o.y() > b[3]) throw usage_error("--eye: the eye is outside --box");
+    for (std::size_t k = 0; k < os.size(); ++k)
+      if (os[k].x() < b[0] || os[k].x() > b[2] || os[k].y() < b[1] || os[k].y() > b[3])
+        throw usage_error(batch ? eyes + ": eye " + std::to_string(k + 1) + " is outside --box" : "--eye: the eye is outside --box");
     add_box(b[0], b[1], b[2], b[3]);
     box_json = {b[0].convert_to<double>(), b[1].convert_to<double>(), b[2].convert_to<double>(), b[3].convert_to<double>()};
   }
   svm::visibility2d_options options;
   options.seed = seed;
   auto index = std::make_unique<svm::wall_index<rational>>(in.scene, options);
-  auto region = index->view(o);
-  bool bounded = region.bounded();
-  double preprocessing = index->preprocessing_seconds(), query = region.stats.seconds;
-  if (!bounded) {
-    // Clipped to a box twice the size of the scene and the eye.
-    rational x0 = o.x(), x1 = o.x(), y0 = o.y(), y1 = o.y();
+  double preprocessing = index->preprocessing_seconds(), query = 0;
+  std::vector<svm::visibility_region<rational>> regions;
+  auto look = [&] {
+    regions.clear();
+    for (auto const& o : os) {
+      regions.push_back(index->view(o));
+      query += regions.back().stats.seconds;
+    }
+  };
+  look();
+  std::vector<char> bounded;
+  for (auto const& r : regions) bounded.push_back(r.bounded());
+  std::size_t unbounded = static_cast<std::size_t>(std::count(bounded.begin(), bounded.end(), 0));
+  if (unbounded > 0) {
+    // Clipped to a box twice the size of the scene and the eyes.
+    rational x0 = os[0].x(), x1 = os[0].x(), y0 = os[0].y(), y1 = os[0].y();
+    auto grow = [&](point2 const& p) { x0 = std::min(x0, p.x()), x1 = std::max(x1, p.x()), y0 = std::min(y0, p.y()), y1 = std::max(y1, p.y()); };
+    for (auto const& o : os) grow(o);
     for (std::size_t i = 0; i < in.scene.wall_count(); ++i)
-      for (auto const& p : in.scene.wall(i)) x0 = std::min(x0, p.x()), x1 = std::max(x1, p.x()), y0 = std::min(y0, p.y()), y1 = std::max(y1, p.y());
+      for (auto const& p : in.scene.wall(i)) grow(p);
     rational m = std::max({x1 - x0, y1 - y0, rational(1)}) / 2;
     add_box(x0 - m, y0 - m, x1 + m, y1 + m);
     box_json = {(x0 - m).convert_to<double>(), (y0 - m).convert_to<double>(), (x1 + m).convert_to<double>(), (y1 + m).convert_to<double>()};
-    std::cerr << "genbsp: the view is unbounded; it is clipped to the box " << box_json.dump() << " (give --box to choose one)\n";
+    std::cerr << "genbsp: " << (batch ? std::to_string(unbounded) + " of the views are" : std::string("the view is"))
+              << " unbounded; clipped to the box " << box_json.dump() << " (give --box to choose one)\n";
     index = std::make_unique<svm::wall_index<rational>>(in.scene, options);
-    region = index->view(o);
     preprocessing += index->preprocessing_seconds();
-    query += region.stats.seconds;
+    look();
   }
-  auto boundary = svm::boundary(region, in.scene);
-  auto area = svm::area(region, in.scene);
-  if (!boundary || !area) throw std::logic_error("visibility2d: the view inside a box is unbounded");
-  // An eye that sees no area (on a spike's tip, say) has a region of one point: written empty.
-  if (boundary->size() < 3) boundary->clear();
-  std::string text;
-  if (ext == ".svg") {
-    text = svg_of(in.scene, *boundary, o);
-  } else if (geojson) {
+  // Each view's boundary and exact area; an eye that sees no area (on a
+  // spike's tip, say) has a region of one point: written empty.
+  std::vector<std::vector<point2>> boundaries;
+  std::vector<rational> areas;
+  for (auto const& r : regions) {
+    auto b = svm::boundary(r, in.scene);
+    auto a = svm::area(r, in.scene);
+    if (!b || !a) throw std::logic_error("visibility2d: the view inside a box is unbounded");
+    if (b->size() < 3) b->clear();
+    boundaries.push_back(std::move(*b));
+    areas.push_back(std::move(*a));
+  }
+  auto feature = [&](std::size_t k) {
+    auto const& o = os[k];
+    auto const& boundary = boundaries[k];
     json ring = json::array();
-    for (std::size_t i = 0; !boundary->empty() && i <= boundary->size(); ++i) {
-      auto const& p = (*boundary)[i % boundary->size()];
+    for (std::size_t i = 0; !boundary.empty() && i <= boundary.size(); ++i) {
+      auto const& p = boundary[i % boundary.size()];
       ring.push_back({p.x().convert_to<double>(), p.y().convert_to<double>()});
     }
     json pieces = json::array();
-    for (auto const& a : region.arcs) {
+    for (auto const& a : regions[k].arcs) {
       if (a.wall < 0) continue;
       auto w = in.scene.wall(static_cast<std::size_t>(a.wall));
       auto p = svm::hit_point(o, a.start(), w), q = svm::hit_point(o, a.end(), w);
@@ -218,38 +282,77 @@ void visibility2d_job::run() const {
                         {"from", {p.x().convert_to<double>(), p.y().convert_to<double>()}},
                         {"to", {q.x().convert_to<double>(), q.y().convert_to<double>()}}});
     }
-    json f = {{"type", "Feature"},
-              {"geometry", {{"type", "Polygon"}, {"coordinates", boundary->empty() ? json::array() : json::array({ring})}}},
-              {"properties",
-               {{"eye", {o.x().convert_to<double>(), o.y().convert_to<double>()}},
-                {"area", area->convert_to<double>()},
-                {"bounded", bounded},
-                {"pieces", pieces}}}};
-    text = f.dump() + "\n";
-  } else {
+    return json{{"type", "Feature"},
+                {"geometry", {{"type", "Polygon"}, {"coordinates", boundary.empty() ? json::array() : json::array({ring})}}},
+                {"properties",
+                 {{"eye", {o.x().convert_to<double>(), o.y().convert_to<double>()}},
+                  {"area", areas[k].convert_to<double>()},
+                  {"bounded", bounded[k] != 0},
+                  {"pieces", pieces}}}};
+  };
+  auto wkt = [&](std::size_t k) {
+    auto const& boundary = boundaries[k];
+    if (boundary.empty()) return std::string("POLYGON EMPTY");
     std::string s = "POLYGON ((";
-    for (std::size_t i = 0; !boundary->empty() && i <= boundary->size(); ++i) {
-      auto const& p = (*boundary)[i % boundary->size()];
+    for (std::size_t i = 0; i <= boundary.size(); ++i) {
+      auto const& p = boundary[i % boundary.size()];
       if (i) s += ", ";
       s += num(p.x()) + ' ' + num(p.y());
     }
-    text = boundary->empty() ? "POLYGON EMPTY\n" : s + "))\n";
+    return s + "))";
+  };
+  std::string text;
+  if (ext == ".svg") {
+    text = svg_of(in.scene, boundaries[0], os[0]);
+  } else if (geojson) {
+    if (!batch) {
+      text = feature(0).dump() + "\n";
+    } else {
+      json fs = json::array();
+      for (std::size_t k = 0; k < os.size(); ++k) fs.push_back(feature(k));
+      text = json{{"type", "FeatureCollection"}, {"features", std::move(fs)}}.dump() + "\n";
+    }
+  } else if (!batch) {
+    text = wkt(0) + "\n";
+  } else {
+    text = "GEOMETRYCOLLECTION (";
+    for (std::size_t k = 0; k < os.size(); ++k) text += (k ? ", " : "") + wkt(k);
+    text += ")\n";
   }
   write_file(output, text);
-  auto const& st = region.stats;
-  json summary = {{"area", area->convert_to<double>()},
-                  {"area_exact", exact_text(*area)},
-                  {"vertices", boundary->size()},
-                  {"bounded", bounded},
-                  {"box", box_json},
-                  {"walls", st.walls},
-                  {"arcs", st.arcs},
-                  {"fragments", st.fragments},
-                  {"visible_pieces", st.visible_pieces},
-                  {"hidden_pieces", st.hidden_pieces},
-                  {"preprocessing_seconds", preprocessing},
-                  {"query_seconds", query},
-                  {"seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()}};
+  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  json summary;
+  if (!batch) {
+    auto const& st = regions[0].stats;
+    summary = {{"area", areas[0].convert_to<double>()},
+               {"area_exact", exact_text(areas[0])},
+               {"vertices", boundaries[0].size()},
+               {"bounded", bounded[0] != 0},
+               {"box", box_json},
+               {"walls", st.walls},
+               {"arcs", st.arcs},
+               {"fragments", st.fragments},
+               {"visible_pieces", st.visible_pieces},
+               {"hidden_pieces", st.hidden_pieces},
+               {"preprocessing_seconds", preprocessing},
+               {"query_seconds", query},
+               {"seconds", seconds}};
+  } else {
+    json views = json::array();
+    for (std::size_t k = 0; k < os.size(); ++k)
+      views.push_back({{"eye", {os[k].x().convert_to<double>(), os[k].y().convert_to<double>()}},
+                       {"area", areas[k].convert_to<double>()},
+                       {"area_exact", exact_text(areas[k])},
+                       {"vertices", boundaries[k].size()},
+                       {"bounded", bounded[k] != 0}});
+    summary = {{"eyes", os.size()},
+               {"views", std::move(views)},
+               {"box", box_json},
+               {"walls", regions[0].stats.walls},
+               {"preprocessing_seconds", preprocessing},
+               {"query_seconds", query},
+               {"seconds", seconds}};
+  }
   (output == "-" ? std::cerr : std::cout) << summary.dump() << "\n";
 }
 
