@@ -78,14 +78,15 @@ depth_order_tree<G, Id> build_depth_order(fragment_list<G, Id> input, Policy pol
 }
 
 namespace detail {
-template <geometry G, class Id, class F>
-void depth_order_traverse(depth_order_tree<G, Id> const& t, typename G::point const& eye, F&& f, bool front_first) {
+template <geometry G, class Id, class F, class Enter, class Stop>
+void depth_order_traverse(depth_order_tree<G, Id> const& t, typename G::point const& eye, F&& f, bool front_first, Enter&& enter,
+                          Stop&& stop) {
   struct item {
     node_id n;
     bool emit; ///< list the node's own fragments now
   };
   std::vector<item> stack{{t.root(), false}};
-  while (!stack.empty()) {
+  while (!stack.empty() && !stop()) {
     auto [n, emit] = stack.back();
     stack.pop_back();
     if (t.is_leaf(n)) continue;
@@ -93,6 +94,7 @@ void depth_order_traverse(depth_order_tree<G, Id> const& t, typename G::point co
       for (auto const& fr : t.node_data(n)) f(fr);
       continue;
     }
+    if (!enter(n)) continue;
     // The eye's side is in front; from a point on the hyperplane either order is right.
     int s = static_cast<int>(G::side(t.splitter(n), eye));
     node_id front = s >= 0 ? t.positive(n) : t.negative(n);
@@ -109,13 +111,21 @@ void depth_order_traverse(depth_order_tree<G, Id> const& t, typename G::point co
 /// no fragment is listed after one that hides part of it.
 template <geometry G, class Id, class F>
 void for_each_front_to_back(depth_order_tree<G, Id> const& t, typename G::point const& eye, F&& f) {
-  detail::depth_order_traverse<G, Id>(t, eye, f, true);
+  detail::depth_order_traverse<G, Id>(t, eye, f, true, [](node_id) { return true; }, [] { return false; });
+}
+
+/// The same, for callers that know what cannot matter any more: the
+/// subtree at interior node `n` is left out when `enter(n)` is false (its
+/// cell is hidden, say), and the traversal ends once `stop()` is true.
+template <geometry G, class Id, class Enter, class F, class Stop>
+void for_each_front_to_back(depth_order_tree<G, Id> const& t, typename G::point const& eye, Enter&& enter, F&& f, Stop&& stop) {
+  detail::depth_order_traverse<G, Id>(t, eye, f, true, enter, stop);
 }
 
 /// Calls `f(fragment)` for every fragment, back to front (the painter's order).
 template <geometry G, class Id, class F>
 void for_each_back_to_front(depth_order_tree<G, Id> const& t, typename G::point const& eye, F&& f) {
-  detail::depth_order_traverse<G, Id>(t, eye, f, false);
+  detail::depth_order_traverse<G, Id>(t, eye, f, false, [](node_id) { return true; }, [] { return false; });
 }
 
 } // namespace bsp

@@ -258,18 +258,21 @@ public:
       std::int64_t wall;
     };
     std::vector<piece> visible;
+    // A fragment of the pass on `bounds`, which go to the store.
+    auto fragment_of = [&store](auto const& bounds) {
+      store.clear();
+      fragment f;
+      for (auto const& b : bounds) f.push_back({&store.emplace_back(b), true});
+      return f;
+    };
     auto keep = [&](fragment&& p, std::int64_t wall) {
       // A piece is at most a half circle: two ends, or one bound [b], from
       // start(b) to −start(b), which is `to = b`.
       visible.push_back({*p.front().c, *p.back().c, wall});
     };
     // The directions out of the rings the eye lies on come first, covered.
-    for (auto const& arc : blocked(eye)) {
-      store.clear();
-      fragment f;
-      for (auto const& b : arc.bounds) f.push_back({&store.emplace_back(b), true});
-      pass.insert(std::move(f), [&](fragment&& p) { keep(std::move(p), behind_boundary); }, [](fragment&&) {});
-    }
+    for (auto const& arc : blocked(eye))
+      pass.insert(fragment_of(arc.bounds), [&](fragment&& p) { keep(std::move(p), behind_boundary); }, [](fragment&&) {});
     pass.rebuild_if_grown();
     auto const& o = eye.homogeneous();
     auto insert = [&](bsp::fragment<kernel, std::uint32_t> const& fr) {
@@ -284,10 +287,9 @@ public:
       // and the point P ∩ B, P(O)·B − B(O)·P, its normal as a point pair
       // whose positive side holds the fragment.
       auto ray = detail::through_eye<2>(po == sign::negative);
-      store.clear();
-      fragment f;
-      for (auto const& b : fr.piece.bounds)
-        f.push_back({&store.emplace_back(construct<2>(ray, P, b.original.n, o)), true});
+      std::vector<s1::hyperplane<FT>> ends;
+      for (auto const& b : fr.piece.bounds) ends.emplace_back(construct<2>(ray, P, b.original.n, o));
+      fragment f = fragment_of(ends);
       if (f.size() != 2) throw std::logic_error("svm::wall_index: a fragment is not a bounded segment");
       // [start, end] counter-clockwise: det(c₀, c₁) < 0.
       if (det_sign(f[0].line(), f[1].line()) == sign::positive) std::swap(f[0], f[1]);
@@ -295,37 +297,15 @@ public:
       st.hidden_pieces += pass.insert(std::move(f), [&](fragment&& p) { keep(std::move(p), wall); }, [](fragment&&) {});
       pass.rebuild_if_grown();
     };
-    // Front to back through the depth order (as `bsp::for_each_front_to_back`),
-    // leaving out the subtrees whose box is hidden, and stopping once every
-    // direction is covered.
-    struct item {
-      bsp::node_id n;
-      bool emit;
+    // Front to back through the depth order, leaving out the subtrees whose
+    // box is hidden, and stopping once every direction is covered.
+    auto enter = [&](bsp::node_id n) {
+      auto cone = boxes_[n.index()].seen_from(eye);
+      if (!cone || !pass.hidden(fragment_of(*cone))) return true;
+      ++st.culled_subtrees;
+      return false;
     };
-    std::vector<item> stack{{tree_.root(), false}};
-    while (!stack.empty() && !pass.all_covered()) {
-      auto [n, emit] = stack.back();
-      stack.pop_back();
-      if (tree_.is_leaf(n)) continue;
-      if (emit) {
-        for (auto const& fr : tree_.node_data(n)) insert(fr);
-        continue;
-      }
-      if (auto cone = boxes_[n.index()].seen_from(eye)) {
-        store.clear();
-        fragment f;
-        for (auto const& b : *cone) f.push_back({&store.emplace_back(b), true});
-        if (pass.hidden(std::move(f))) {
-          ++st.culled_subtrees;
-          continue;
-        }
-      }
-      int s = static_cast<int>(kernel::side(tree_.splitter(n), eye));
-      bsp::node_id front = s >= 0 ? tree_.positive(n) : tree_.negative(n), back = s >= 0 ? tree_.negative(n) : tree_.positive(n);
-      stack.push_back({back, false});
-      stack.push_back({n, true});
-      stack.push_back({front, false});
-    }
+    bsp::for_each_front_to_back(tree_, eye, enter, insert, [&] { return pass.all_covered(); });
     st.visible_pieces = visible.size();
     st.coverage_nodes_peak = pass.peak_interior_nodes();
     // Counter-clockwise from (1, 0); touching pieces of one wall join, and

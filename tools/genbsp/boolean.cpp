@@ -65,12 +65,6 @@ boolean::fill_rule rule(std::string const& r) {
   return boolean::fill_rule::negative;
 }
 
-std::string extension(std::string const& path) {
-  std::string e = std::filesystem::path(path).extension().string();
-  for (auto& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return e;
-}
-
 /// The plane: an operand from a file, as polygons with holes or as paths.
 boolean::operand plane_operand(std::string const& file, std::string const& fill) {
   auto m = geometry::io::read_polygons(file);

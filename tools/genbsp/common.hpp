@@ -6,11 +6,15 @@
 
 #include <unistd.h>
 
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <iterator>
+#include <sstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace genbsp_tool {
 
@@ -66,6 +70,53 @@ inline std::string exact_text(rational const& q) {
     s.insert(s.size() - static_cast<std::size_t>(digits), ".");
   }
   return (neg ? "-" : "") + s;
+}
+
+/// The extension of `path`, lower case, with its dot.
+inline std::string extension(std::string const& path) {
+  std::string e = std::filesystem::path(path).extension().string();
+  for (auto& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return e;
+}
+
+/// A line of numbers read from a file, and its number.
+struct number_line {
+  std::size_t line;
+  std::vector<rational> values;
+};
+
+/// The lines of `count` numbers of a file ("-": standard input), read
+/// exactly; "#" starts a comment, blank lines are skipped, commas count as
+/// spaces.  Bad input is a `usage_error` naming the file and line; `form`
+/// names what a line should hold ("'dx dy dz'").
+inline std::vector<number_line> read_number_lines(std::string const& path, std::size_t count, std::string const& form) {
+  std::ifstream file;
+  std::istream* in = &std::cin;
+  if (path != "-") {
+    file.open(path);
+    if (!file) throw usage_error(path + ": cannot open");
+    in = &file;
+  }
+  std::string name = path == "-" ? "<stdin>" : path;
+  std::vector<number_line> out;
+  std::string line;
+  for (std::size_t number = 1; std::getline(*in, line); ++number) {
+    if (auto hash = line.find('#'); hash != std::string::npos) line.erase(hash);
+    for (auto& c : line)
+      if (c == ',') c = ' ';
+    std::istringstream words(line);
+    std::vector<std::string> w{std::istream_iterator<std::string>(words), {}};
+    if (w.empty()) continue;
+    if (w.size() != count) throw usage_error(name + ":" + std::to_string(number) + ": expected " + form);
+    number_line l{number, {}};
+    for (auto const& x : w) try {
+        l.values.push_back(geometry::parse_number<rational>(x));
+      } catch (geometry::parse_error const& e) {
+        throw usage_error(name + ":" + std::to_string(number) + ": " + e.what());
+      }
+    out.push_back(std::move(l));
+  }
+  return out;
 }
 
 } // namespace genbsp_tool

@@ -759,32 +759,12 @@ int run(int argc, char** argv) {
               << "\n";
   } else if (*locate) {
     auto l = load(lj);
-    std::ifstream file;
-    std::istream* in = &std::cin;
-    if (dirs != "-") {
-      file.open(dirs);
-      if (!file) throw usage_error(dirs + ": cannot open");
-      in = &file;
-    }
-    std::string name = dirs == "-" ? "<stdin>" : dirs;
     // Read every direction before building, so that bad input fails fast.
     std::vector<std::array<rational, 3>> ds;
-    std::string line;
-    for (std::size_t number = 1; std::getline(*in, line); ++number) {
-      auto hash = line.find('#');
-      if (hash != std::string::npos) line.erase(hash);
-      std::istringstream words(line);
-      std::vector<std::string> w{std::istream_iterator<std::string>(words), {}};
-      if (w.empty()) continue;
-      if (w.size() != 3) throw usage_error(name + ":" + std::to_string(number) + ": expected 'dx dy dz'");
-      std::array<rational, 3> d;
-      for (std::size_t i = 0; i < 3; ++i) try {
-          d[i] = geometry::parse_number<rational>(w[i]);
-        } catch (geometry::parse_error const& e) {
-          throw usage_error(name + ":" + std::to_string(number) + ": " + e.what());
-        }
+    for (auto& l : read_number_lines(dirs, 3, "'dx dy dz'")) {
+      std::array<rational, 3> d{l.values[0], l.values[1], l.values[2]};
       if (locate_view_dir.empty() && d[0] == 0 && d[1] == 0 && d[2] == 0)
-        throw usage_error(name + ":" + std::to_string(number) + ": the zero vector is no direction");
+        throw usage_error((dirs == "-" ? std::string("<stdin>") : dirs) + ":" + std::to_string(l.line) + ": the zero vector is no direction");
       ds.push_back(d);
     }
     if (lj.eye_text.empty() == locate_view_dir.empty()) throw usage_error("locate: give --eye X,Y,Z or --view-dir DX,DY,DZ");

@@ -13,8 +13,6 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <sstream>
 
 namespace genbsp_tool {
@@ -89,12 +87,6 @@ loaded_walls load(std::string const& file) {
   return out;
 }
 
-std::string extension(std::string const& path) {
-  std::string e = std::filesystem::path(path).extension().string();
-  for (auto& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return e;
-}
-
 std::string num(rational const& q) { return geometry::io::detail::shortest(q); }
 
 std::string svg_of(walls const& s, std::vector<point2> const& boundary, point2 const& eye) {
@@ -131,34 +123,11 @@ std::string svg_of(walls const& s, std::vector<point2> const& boundary, point2 c
   return o.str();
 }
 
-/// The eyes of a file (or "-", standard input): one "x y" or "x,y" a line,
-/// exact; "#" starts a comment.
+/// The eyes of a file (or "-", standard input): one "x y" or "x,y" a line.
 std::vector<point2> read_eyes(std::string const& path) {
-  std::ifstream file;
-  std::istream* in = &std::cin;
-  if (path != "-") {
-    file.open(path);
-    if (!file) throw usage_error(path + ": cannot open");
-    in = &file;
-  }
-  std::string name = path == "-" ? "<stdin>" : path;
   std::vector<point2> out;
-  std::string line;
-  for (std::size_t number = 1; std::getline(*in, line); ++number) {
-    if (auto hash = line.find('#'); hash != std::string::npos) line.erase(hash);
-    for (auto& c : line)
-      if (c == ',') c = ' ';
-    std::istringstream words(line);
-    std::vector<std::string> w{std::istream_iterator<std::string>(words), {}};
-    if (w.empty()) continue;
-    if (w.size() != 2) throw usage_error(name + ":" + std::to_string(number) + ": expected 'x y'");
-    try {
-      out.emplace_back(geometry::parse_number<rational>(w[0]), geometry::parse_number<rational>(w[1]));
-    } catch (geometry::parse_error const& e) {
-      throw usage_error(name + ":" + std::to_string(number) + ": " + e.what());
-    }
-  }
-  if (out.empty()) throw usage_error(name + ": no eye");
+  for (auto& l : read_number_lines(path, 2, "'x y'")) out.emplace_back(l.values[0], l.values[1]);
+  if (out.empty()) throw usage_error((path == "-" ? std::string("<stdin>") : path) + ": no eye");
   return out;
 }
 
