@@ -25,6 +25,23 @@ inline void draw_cairo(cairo_t* cr, drawing const& d) {
     cairo_set_source_rgb(cr, d.background->r, d.background->g, d.background->b);
     cairo_paint(cr);
   }
+  if (!d.layers.empty()) {
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+    for (auto const& layer : d.layers) {
+      if (!layer.shown) continue;
+      cairo_set_line_width(cr, layer.width);
+      cairo_set_line_cap(cr, layer.dash.empty() ? CAIRO_LINE_CAP_ROUND : CAIRO_LINE_CAP_BUTT);
+      cairo_set_dash(cr, layer.dash.data(), static_cast<int>(layer.dash.size()), 0);
+      for (auto const& line : layer.lines) {
+        for (std::size_t i = 0; i < line.size(); ++i)
+          (i == 0 ? cairo_move_to : cairo_line_to)(cr, line[i].x, line[i].y);
+        cairo_stroke(cr);
+      }
+    }
+    cairo_set_dash(cr, nullptr, 0, 0);
+    return;
+  }
   if (d.style == style::lines) {
     cairo_set_source_rgb(cr, 0, 0, 0);
     cairo_set_line_width(cr, 1);

@@ -64,6 +64,16 @@ struct region {
   std::uint64_t lights = ~std::uint64_t{0};
 };
 
+/// One layer of a line drawing: the lines of one class, visible or hidden,
+/// with their pen (stroke width and dash pattern, in pixels).
+struct line_layer {
+  std::string name;  ///< e.g. "visible-outline", "hidden-crease"
+  bool shown = true; ///< false: written, but hidden in the document (SVG display:none)
+  double width = 1;
+  std::vector<double> dash; ///< on, off, … lengths; empty: solid
+  std::vector<std::vector<pixel>> lines;
+};
+
 /// A drawing: regions, polylines (style `lines`), size and background.
 struct drawing {
   int width = 0, height = 0;
@@ -76,6 +86,9 @@ struct drawing {
   /// Style `lines`: visible edges drawn, an edge being a maximal piece of one
   /// great circle (pieces of one circle joined end to end count once).
   std::size_t edges = 0;
+  /// Hidden-line drawings (`draw_lines`): one layer per kind of line, drawn
+  /// in order; when there are any, `polylines` and `thin_polylines` are empty.
+  std::vector<line_layer> layers;
 };
 
 /// What the drawing knows of each input face: colour and plane.
@@ -236,6 +249,129 @@ inline void cycle_path(projector const& pr, std::vector<vec3> const& v, std::vec
   path.push_back({command::close});
 }
 
+/// The image of the minor arc from unit vector `p` to `q`: its ends in a
+/// perspective view, else points along it within `tol` pixels.
+inline std::vector<pixel> arc_image(projector const& pr, vec3 const& p, vec3 const& q, double tol) {
+  std::vector<pixel> pts;
+  if (pr.kind() == projection::perspective) pts = {pr.project(p), pr.project(q)};
+  else {
+    int side = pr.kind() == projection::equirectangular ? seam_side(pr, {p, q}) : 0;
+    if (pr.kind() == projection::equirectangular && (is_pole(pr, p) || is_pole(pr, q))) {
+      vec3 const& pole = is_pole(pr, p) ? p : q;
+      vec3 const& other = is_pole(pr, p) ? q : p;
+      double lon = projector::longitude(pr.local(other), side);
+      double lat = std::asin(std::clamp(dot3(pole, pr.up()), -1.0, 1.0));
+      pixel at_pole{pr.cam().width / 2.0 + pr.scale() * lon, pr.cam().height / 2.0 - pr.scale() * lat};
+      pts = is_pole(pr, p) ? std::vector<pixel>{at_pole, pr.project(q, side)} : std::vector<pixel>{pr.project(p, side), at_pole};
+    } else {
+      pts.push_back(pr.project(p, side));
+      subdivide(pr, p, q, side, tol, pts);
+    }
+  }
+  return pts;
+}
+
+/// A piece of a line in the image: its ends' keys (equal keys: the same
+/// point, where pieces may join), its points, and its great circle.
+struct line_image {
+  std::uint64_t from, to;
+  std::vector<pixel> pts;
+  vec3 circle; ///< unit normal of the piece's great circle
+};
+
+/// Pen-up travel of drawing `lines` in order, starting at the image's origin.
+inline double pen_travel(std::vector<std::vector<pixel>> const& lines) {
+  double d = 0;
+  pixel pen{0, 0};
+  for (auto const& l : lines) {
+    if (l.empty()) continue;
+    d += std::hypot(l.front().x - pen.x, l.front().y - pen.y);
+    pen = l.back();
+  }
+  return d;
+}
+
+/// Joins `pieces` into polylines at ends where exactly two meet (and their
+/// images agree: not across the panorama's seam), then orders them greedily
+/// (nearest end next) to shorten pen travel, appending them to `result`.
+/// Returns the number of edges: pieces of one great circle joined end to end
+/// count once (and, in a `perspective` image, their joint is no corner).
+inline std::size_t assemble(std::vector<line_image> const& pieces, bool perspective, std::vector<std::vector<pixel>>& result) {
+  std::size_t straight_joins = 0;
+  std::map<std::uint64_t, std::vector<std::size_t>> at;
+  for (std::size_t i = 0; i < pieces.size(); ++i) at[pieces[i].from].push_back(i), at[pieces[i].to].push_back(i);
+  std::vector<char> used(pieces.size(), 0);
+  auto close_to = [](pixel a, pixel b) { return std::hypot(a.x - b.x, a.y - b.y) < 1e-6; };
+  auto same_circle = [&](std::size_t a, std::size_t b) { return norm3(cross3(pieces[a].circle, pieces[b].circle)) < 1e-12; };
+  // Extends `line`, whose last piece is `last`, from the end `end`; returns the last piece and end.
+  auto extend = [&](std::vector<pixel>& line, std::size_t last, std::uint64_t end) -> std::pair<std::size_t, std::uint64_t> {
+    while (true) {
+      auto const& list = at[end];
+      if (list.size() != 2) return {last, end};
+      std::size_t next = used[list[0]] ? list[1] : list[0];
+      if (used[next]) return {last, end};
+      auto const& pc = pieces[next];
+      bool fwd = pc.from == end;
+      pixel start = fwd ? pc.pts.front() : pc.pts.back();
+      if (!close_to(start, line.back())) return {last, end};
+      used[next] = 1;
+      if (same_circle(next, last)) {
+        ++straight_joins;
+        if (perspective && line.size() >= 2) line.pop_back();
+      }
+      last = next;
+      if (fwd) line.insert(line.end(), pc.pts.begin() + 1, pc.pts.end());
+      else line.insert(line.end(), pc.pts.rbegin() + 1, pc.pts.rend());
+      end = fwd ? pc.to : pc.from;
+    }
+  };
+  std::vector<std::vector<pixel>> lines;
+  auto run = [&](std::size_t i) {
+    used[i] = 1;
+    auto const& pc = pieces[i];
+    std::vector<pixel> line = pc.pts;
+    auto [tail, end] = extend(line, i, pc.to);
+    if (end == pc.from && tail != i && close_to(line.front(), line.back())) {
+      // A closed loop: its start is a joint too.
+      if (same_circle(tail, i)) {
+        ++straight_joins;
+        if (perspective && line.size() >= 3) {
+          line.erase(line.begin());
+          line.back() = line.front();
+        }
+      }
+      lines.push_back(std::move(line));
+      return;
+    }
+    std::reverse(line.begin(), line.end());
+    extend(line, i, pc.from);
+    lines.push_back(std::move(line));
+  };
+  for (std::size_t i = 0; i < pieces.size(); ++i)
+    if (!used[i] && (at[pieces[i].from].size() != 2 || at[pieces[i].to].size() != 2)) run(i);
+  for (std::size_t i = 0; i < pieces.size(); ++i)
+    if (!used[i]) run(i);
+  std::vector<char> done(lines.size(), 0);
+  pixel pen{0, 0};
+  for (std::size_t n = 0; n < lines.size(); ++n) {
+    std::size_t best = 0;
+    bool reverse = false;
+    double bd = HUGE_VAL;
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+      if (done[i]) continue;
+      double a = std::hypot(lines[i].front().x - pen.x, lines[i].front().y - pen.y);
+      double b = std::hypot(lines[i].back().x - pen.x, lines[i].back().y - pen.y);
+      if (a < bd) bd = a, best = i, reverse = false;
+      if (b < bd) bd = b, best = i, reverse = true;
+    }
+    done[best] = 1;
+    if (reverse) std::reverse(lines[best].begin(), lines[best].end());
+    pen = lines[best].back();
+    result.push_back(std::move(lines[best]));
+  }
+  return pieces.size() - straight_joins;
+}
+
 inline rgb shade(rgb c, double intensity) { return {c.r * intensity, c.g * intensity, c.b * intensity}; }
 
 } // namespace detail
@@ -305,12 +441,7 @@ drawing draw(visibility_map<FT> const& vm, projector const& pr, std::vector<face
       if (o.crease <= 0) return !same_plane;
       return c < cos_crease;
     };
-    struct piece {
-      index from, to;
-      std::vector<pixel> pts;
-      vec3 circle; ///< unit normal of the edge's great circle
-    };
-    std::vector<piece> solid, thin;
+    std::vector<line_image> solid, thin;
     auto const& he = m.half_edges();
     for (index e = 0; e < he.size(); e += 2) {
       std::int64_t a = m.faces()[he[e].face].label, b = m.faces()[he[e + 1].face].label;
@@ -318,108 +449,11 @@ drawing draw(visibility_map<FT> const& vm, projector const& pr, std::vector<face
       bool shadow_edge = o.regions && a >= 0 && b >= 0 && a != b && face_of(a) == face_of(b);
       if (!shadow_edge && !drawn(a, b)) continue;
       vec3 p = vertex[m.origin(e)], q = vertex[m.target(e)];
-      std::vector<pixel> pts;
-      if (pr.kind() == projection::perspective) pts = {pr.project(p), pr.project(q)};
-      else {
-        int side = pr.kind() == projection::equirectangular ? seam_side(pr, {p, q}) : 0;
-        if (pr.kind() == projection::equirectangular && (is_pole(pr, p) || is_pole(pr, q))) {
-          vec3 const& pole = is_pole(pr, p) ? p : q;
-          vec3 const& other = is_pole(pr, p) ? q : p;
-          double lon = projector::longitude(pr.local(other), side);
-          double lat = std::asin(std::clamp(dot3(pole, pr.up()), -1.0, 1.0));
-          pixel at_pole{pr.cam().width / 2.0 + pr.scale() * lon, pr.cam().height / 2.0 - pr.scale() * lat};
-          pts = is_pole(pr, p) ? std::vector<pixel>{at_pole, pr.project(q, side)} : std::vector<pixel>{pr.project(p, side), at_pole};
-        } else {
-          pts.push_back(pr.project(p, side));
-          subdivide(pr, p, q, side, o.tolerance, pts);
-        }
-      }
+      auto pts = arc_image(pr, p, q, o.tolerance);
       (shadow_edge ? thin : solid).push_back({m.origin(e), m.target(e), std::move(pts), unit_circle(m, e)});
     }
-    // Joins pieces into polylines ordered for the pen; returns the number of
-    // edges (pieces of one great circle joined end to end count once).
-    auto assemble = [&](std::vector<piece> const& pieces, std::vector<std::vector<pixel>>& result) {
-      // Pieces of one great circle joined end to end are one edge.
-      std::size_t straight_joins = 0;
-      // Join pieces into polylines at vertices where exactly two meet (and the
-      // images agree: not across the panorama's seam); then order them greedily
-      // to shorten pen travel.
-      std::map<index, std::vector<std::size_t>> at;
-      for (std::size_t i = 0; i < pieces.size(); ++i) at[pieces[i].from].push_back(i), at[pieces[i].to].push_back(i);
-      std::vector<char> used(pieces.size(), 0);
-      auto close_to = [](pixel a, pixel b) { return std::hypot(a.x - b.x, a.y - b.y) < 1e-6; };
-      auto same_circle = [&](std::size_t a, std::size_t b) { return norm3(cross3(pieces[a].circle, pieces[b].circle)) < 1e-12; };
-      // Extends `line`, whose last piece is `last`, from vertex `end`; returns the last piece and vertex.
-      auto extend = [&](std::vector<pixel>& line, std::size_t last, index end) -> std::pair<std::size_t, index> {
-        while (true) {
-          auto const& list = at[end];
-          if (list.size() != 2) return {last, end};
-          std::size_t next = used[list[0]] ? list[1] : list[0];
-          if (used[next]) return {last, end};
-          auto const& pc = pieces[next];
-          bool fwd = pc.from == end;
-          pixel start = fwd ? pc.pts.front() : pc.pts.back();
-          if (!close_to(start, line.back())) return {last, end};
-          used[next] = 1;
-          if (same_circle(next, last)) {
-            ++straight_joins;
-            // A perspective image is straight there: the joint is no corner.
-            if (pr.kind() == projection::perspective && line.size() >= 2) line.pop_back();
-          }
-          last = next;
-          if (fwd) line.insert(line.end(), pc.pts.begin() + 1, pc.pts.end());
-          else line.insert(line.end(), pc.pts.rbegin() + 1, pc.pts.rend());
-          end = fwd ? pc.to : pc.from;
-        }
-      };
-      std::vector<std::vector<pixel>> lines;
-      auto run = [&](std::size_t i) {
-        used[i] = 1;
-        auto const& pc = pieces[i];
-        std::vector<pixel> line = pc.pts;
-        auto [tail, end] = extend(line, i, pc.to);
-        if (end == pc.from && tail != i && close_to(line.front(), line.back())) {
-          // A closed loop: its start is a joint too.
-          if (same_circle(tail, i)) {
-            ++straight_joins;
-            if (pr.kind() == projection::perspective && line.size() >= 3) {
-              line.erase(line.begin());
-              line.back() = line.front();
-            }
-          }
-          lines.push_back(std::move(line));
-          return;
-        }
-        std::reverse(line.begin(), line.end());
-        extend(line, i, pc.from);
-        lines.push_back(std::move(line));
-      };
-      for (std::size_t i = 0; i < pieces.size(); ++i)
-        if (!used[i] && (at[pieces[i].from].size() != 2 || at[pieces[i].to].size() != 2)) run(i);
-      for (std::size_t i = 0; i < pieces.size(); ++i)
-        if (!used[i]) run(i);
-      std::vector<char> done(lines.size(), 0);
-      pixel pen{0, 0};
-      for (std::size_t n = 0; n < lines.size(); ++n) {
-        std::size_t best = 0;
-        bool reverse = false;
-        double bd = HUGE_VAL;
-        for (std::size_t i = 0; i < lines.size(); ++i) {
-          if (done[i]) continue;
-          double a = std::hypot(lines[i].front().x - pen.x, lines[i].front().y - pen.y);
-          double b = std::hypot(lines[i].back().x - pen.x, lines[i].back().y - pen.y);
-          if (a < bd) bd = a, best = i, reverse = false;
-          if (b < bd) bd = b, best = i, reverse = true;
-        }
-        done[best] = 1;
-        if (reverse) std::reverse(lines[best].begin(), lines[best].end());
-        pen = lines[best].back();
-        result.push_back(std::move(lines[best]));
-      }
-      return pieces.size() - straight_joins;
-    };
-    out.edges = assemble(solid, out.polylines);
-    assemble(thin, out.thin_polylines);
+    out.edges = assemble(solid, pr.kind() == projection::perspective, out.polylines);
+    assemble(thin, pr.kind() == projection::perspective, out.thin_polylines);
     return out;
   }
 

@@ -73,26 +73,52 @@ inline std::string to_svg(drawing const& d, int digits = 2) {
   out += "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + std::to_string(d.width) + "\" height=\"" +
          std::to_string(d.height) + "\" viewBox=\"0 0 " + std::to_string(d.width) + " " + std::to_string(d.height) + "\"";
   if (d.style == style::id) out += " shape-rendering=\"crispEdges\"";
+  if (!d.layers.empty()) out += " xmlns:inkscape=\"http://www.inkscape.org/namespaces/inkscape\"";
   out += ">\n";
   if (d.background)
     out += "<rect width=\"" + std::to_string(d.width) + "\" height=\"" + std::to_string(d.height) + "\" fill=\"" +
            detail::hex(*d.background) + "\"/>\n";
+  auto polyline = [&](std::vector<pixel> const& line) {
+    out += "<path d=\"";
+    for (std::size_t i = 0; i < line.size(); ++i) {
+      out += i == 0 ? "M" : " L";
+      detail::append_number(out, line[i].x, digits);
+      out += ',';
+      detail::append_number(out, line[i].y, digits);
+    }
+    out += "\"/>\n";
+  };
+  if (!d.layers.empty()) {
+    // One Inkscape layer per kind of line, with its pen.
+    for (auto const& layer : d.layers) {
+      out += "<g id=\"" + layer.name + "\" inkscape:groupmode=\"layer\" inkscape:label=\"" + layer.name +
+             "\" fill=\"none\" stroke=\"#000\" stroke-width=\"";
+      detail::append_number(out, layer.width, 3);
+      out += "\" stroke-linejoin=\"round\"";
+      if (layer.dash.empty()) out += " stroke-linecap=\"round\"";
+      else {
+        out += " stroke-linecap=\"butt\" stroke-dasharray=\"";
+        for (std::size_t i = 0; i < layer.dash.size(); ++i) {
+          if (i) out += ' ';
+          detail::append_number(out, layer.dash[i], 3);
+        }
+        out += "\"";
+      }
+      if (!layer.shown) out += " style=\"display:none\"";
+      out += ">\n";
+      for (auto const& line : layer.lines) polyline(line);
+      out += "</g>\n";
+    }
+    out += "</svg>\n";
+    return out;
+  }
   if (d.style == style::lines) {
     // Visible edges, then shadow boundaries (thin), each a group.
     auto group = [&](std::vector<std::vector<pixel>> const& lines, char const* width, char const* id) {
       if (lines.empty()) return;
       out += std::string("<g id=\"") + id + "\" fill=\"none\" stroke=\"#000\" stroke-width=\"" + width +
              "\" stroke-linejoin=\"round\" stroke-linecap=\"round\">\n";
-      for (auto const& line : lines) {
-        out += "<path d=\"";
-        for (std::size_t i = 0; i < line.size(); ++i) {
-          out += i == 0 ? "M" : " L";
-          detail::append_number(out, line[i].x, digits);
-          out += ',';
-          detail::append_number(out, line[i].y, digits);
-        }
-        out += "\"/>\n";
-      }
+      for (auto const& line : lines) polyline(line);
       out += "</g>\n";
     };
     group(d.polylines, "1", "edges");
