@@ -1,0 +1,431 @@
+/// @file
+/// Hidden lines: the exact visible and hidden parts of every edge of a
+/// scene, read off its visibility map, and the classes a technical drawing
+/// keeps apart (outlines, silhouettes, creases, open boundaries, intersection
+/// curves, shadow boundaries).
+///
+/// An edge a → b seen from the eye O is the minor arc of the circle through
+/// O, a and b.  The arc goes down the map's locator twice, once taking the
+/// cells on its right where it lies on a node's circle and once those on its
+/// left; each piece it ends up in has one map face on either side, and the
+/// pieces are cut only by the locator's circles (input-derived), so no
+/// constructed point feeds a construction.  A point x of a piece is hidden
+/// when a polygon seen on either side lies strictly between O and x: the
+/// sign of that polygon's plane at x, linear along the edge, is evaluated at
+/// the piece's ends (intersections of the edge's circle with its bounds,
+/// degree bounded) and, where it changes inside, at the crossing.  Polygons
+/// seen edge-on (the eye in their plane) are not in the map; an edge in such
+/// a plane is tested against them directly.
+#pragma once
+
+#include "build.hpp"
+
+#include <bsp/point_set.hpp>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <numbers>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace svm {
+
+/// What a drawn line is.
+enum class line_class : std::uint8_t {
+  outline,      ///< an edge seen against empty space or a polygon it does not bound
+  silhouette,   ///< an edge whose two polygons lie on one side of it in the view (a fold: the contour of a surface)
+  crease,       ///< an edge where two polygons meet at more than the crease angle
+  boundary,     ///< an edge of one polygon only (an open mesh's border)
+  intersection, ///< where two polygons cross (visible parts only)
+  shadow,       ///< a shadow's boundary on a polygon (visible parts only)
+};
+inline constexpr std::size_t line_class_count = 6;
+
+inline std::string_view name_of(line_class c) {
+  constexpr std::array<std::string_view, line_class_count> names{"outline", "silhouette", "crease", "boundary", "intersection", "shadow"};
+  return names[static_cast<std::size_t>(c)];
+}
+
+/// An edge of the scene: a side of one or more polygons, once however many
+/// polygons have it (vertices are welded by their exact coordinates).
+template <geometry::number FT> struct scene_edge {
+  geometry::e3::point<FT> a, b;
+  std::uint32_t va = 0, vb = 0;         ///< welded vertex numbers of `a` and `b`
+  std::vector<std::uint32_t> polygons; ///< indices of the polygons it is a side of
+};
+
+/// How an edge is drawn, from its polygons and the eye (the view's part is
+/// the silhouette test only).
+enum class edge_kind : std::uint8_t {
+  never,      ///< between two polygons of one plane on either side of it (a diagonal): never drawn
+  smooth,     ///< between two polygons meeting at no more than the crease angle: drawn only as an outline
+  crease,     ///< drawn, visible and hidden
+  silhouette, ///< drawn, visible and hidden
+  boundary,   ///< drawn, visible and hidden
+};
+
+/// A maximal run of one edge, visible or hidden, of one class: the points
+/// a + t·(b − a) for t in [t0, t1], exactly.
+template <geometry::number FT> struct line_piece {
+  std::uint32_t edge = 0;
+  FT t0, t1;
+  bool hidden = false;
+  line_class cls = line_class::crease;
+};
+
+/// A visible map edge drawn for itself: an intersection curve or a shadow
+/// boundary (the map's even half-edge `half_edge`).
+struct map_line {
+  index half_edge = none;
+  line_class cls = line_class::intersection;
+};
+
+struct line_options {
+  /// Edges where polygons meet at no more than this angle (degrees) are
+  /// smooth: drawn only where they are seen against something else.  At 0,
+  /// only edges between polygons of one plane are left out.
+  double crease = 0;
+};
+
+struct line_statistics {
+  std::size_t edges = 0;             ///< scene edges
+  std::size_t edges_through_eye = 0; ///< edges on a line through the eye (no length in the view)
+  std::size_t arc_pieces = 0;        ///< pieces of edges between map cells, before merging
+  std::size_t edge_on_tests = 0;     ///< edges tested against polygons seen edge-on
+  double seconds = 0;
+};
+
+/// The lines of a view.
+template <geometry::number FT> struct line_set {
+  std::vector<scene_edge<FT>> edges;
+  std::vector<edge_kind> kinds; ///< per edge
+  std::vector<line_piece<FT>> pieces;
+  std::vector<map_line> map_lines;
+  line_statistics stats;
+};
+
+namespace detail {
+
+template <class FT> using v3 = std::array<FT, 3>;
+
+template <class FT> v3<FT> minus(geometry::e3::point<FT> const& p, geometry::e3::point<FT> const& q) {
+  return {p.x() - q.x(), p.y() - q.y(), p.z() - q.z()};
+}
+template <class FT> v3<FT> minus(v3<FT> const& p, v3<FT> const& q) { return {p[0] - q[0], p[1] - q[1], p[2] - q[2]}; }
+template <class FT> FT dot3x(v3<FT> const& a, v3<FT> const& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+template <class FT> v3<FT> cross3x(v3<FT> const& a, v3<FT> const& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+template <class FT> int sgn(FT const& x) { return static_cast<int>(geometry::sign_of(x)); }
+template <class FT> bool is_zero3(v3<FT> const& v) { return sgn(v[0]) == 0 && sgn(v[1]) == 0 && sgn(v[2]) == 0; }
+
+/// A polygon's plane relative to the eye: `n · (x − O) + d`, with `x − O`
+/// given; positive on the polygon's front.
+template <class FT> struct eye_plane {
+  v3<FT> n;
+  FT d; ///< the plane's value at the eye
+  FT at(v3<FT> const& x) const { return dot3x(n, x) + d; }
+};
+
+template <class FT> eye_plane<FT> plane_of(polygon<FT> const& p, geometry::e3::point<FT> const& eye) {
+  auto a = minus(p.vertices[0], eye), b = minus(p.vertices[1], eye), c = minus(p.vertices[2], eye);
+  auto n = cross3x(minus(b, a), minus(c, a));
+  return {n, -dot3x(n, a)};
+}
+
+/// The line through the eye's plane `n` up to scale and orientation, as a
+/// key: divided by its first non-zero coordinate.
+template <class FT> v3<FT> line_key(v3<FT> n) {
+  std::size_t k = 0;
+  while (sgn(n[k]) == 0) ++k;
+  FT s = n[k];
+  for (auto& x : n) x /= s;
+  return n;
+}
+
+/// The unit bend between polygons p and q along the edge a–b (0: flat, π:
+/// folded back), in doubles (it only meets the crease threshold).
+inline double bend(v3<double> const& e, v3<double> const& u, v3<double> const& w) {
+  auto perp = [&](v3<double> x) {
+    double k = dot3x(x, e) / dot3x(e, e);
+    return v3<double>{x[0] - k * e[0], x[1] - k * e[1], x[2] - k * e[2]};
+  };
+  auto pu = perp(u), pw = perp(w);
+  double c = dot3x(pu, pw) / std::sqrt(dot3x(pu, pu) * dot3x(pw, pw));
+  return std::numbers::pi - std::acos(std::clamp(c, -1.0, 1.0));
+}
+
+template <class FT> double to_double(FT const& x) {
+  if constexpr (std::is_same_v<FT, double>) return x;
+  else return x.template convert_to<double>();
+}
+
+} // namespace detail
+
+/// The edges of `polygons`, each once: vertices welded by exact coordinates.
+template <geometry::number FT> std::vector<scene_edge<FT>> scene_edges(std::vector<polygon<FT>> const& polygons) {
+  std::map<std::array<FT, 3>, std::uint32_t> ids;
+  auto id = [&](geometry::e3::point<FT> const& p) {
+    return ids.try_emplace({p.x(), p.y(), p.z()}, static_cast<std::uint32_t>(ids.size())).first->second;
+  };
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> at;
+  std::vector<scene_edge<FT>> out;
+  for (std::uint32_t i = 0; i < polygons.size(); ++i) {
+    auto const& v = polygons[i].vertices;
+    for (std::size_t k = 0; k < v.size(); ++k) {
+      auto const &a = v[k], &b = v[(k + 1) % v.size()];
+      std::uint32_t ia = id(a), ib = id(b);
+      if (ia == ib) continue;
+      auto [it, fresh] = at.try_emplace(std::minmax(ia, ib), static_cast<std::uint32_t>(out.size()));
+      if (fresh) out.push_back(ia < ib ? scene_edge<FT>{a, b, ia, ib, {i}} : scene_edge<FT>{b, a, ib, ia, {i}});
+      else if (out[it->second].polygons.back() != i) out[it->second].polygons.push_back(i);
+    }
+  }
+  return out;
+}
+
+/// How edge `e` is drawn from `eye` (see `edge_kind`).
+template <geometry::number FT>
+edge_kind kind_of(scene_edge<FT> const& e, std::vector<polygon<FT>> const& polygons, geometry::e3::point<FT> const& eye, line_options const& o) {
+  using namespace detail;
+  if (e.polygons.size() == 1) return edge_kind::boundary;
+  if (e.polygons.size() > 2) return edge_kind::crease;
+  // A vertex of each polygon off the edge (strictly convex: any other vertex).
+  auto off = [&](polygon<FT> const& p) -> geometry::e3::point<FT> const& {
+    for (auto const& v : p.vertices)
+      if (!(v == e.a) && !(v == e.b)) return v;
+    return p.vertices[0];
+  };
+  auto const &p = polygons[e.polygons[0]], &q = polygons[e.polygons[1]];
+  auto A = minus(e.a, eye), B = minus(e.b, eye);
+  auto n = cross3x(A, B); // the plane through the eye and the edge
+  auto cp = minus(off(p), eye), cq = minus(off(q), eye);
+  int sp = sgn(dot3x(n, cp)), sq = sgn(dot3x(n, cq));
+  auto pp = plane_of(p, eye);
+  bool coplanar = sgn(pp.at(cq)) == 0;
+  // Both polygons on one side of the edge in the view: the surface folds there.
+  if (sp == 0 || sq == 0 || sp == sq) {
+    // A flat pair seen exactly edge-on is still a diagonal.
+    if (coplanar && sp == 0 && sq == 0) {
+      auto E = minus(B, A);
+      if (sgn(dot3x(cross3x(E, minus(cp, A)), cross3x(E, minus(cq, A)))) < 0) return edge_kind::never;
+    }
+    return edge_kind::silhouette;
+  }
+  if (coplanar) return edge_kind::never;
+  if (o.crease <= 0) return edge_kind::crease;
+  auto d = [](v3<FT> const& x) { return v3<double>{to_double(x[0]), to_double(x[1]), to_double(x[2])}; };
+  double b = bend(d(minus(B, A)), d(minus(cp, A)), d(minus(cq, A)));
+  return b > o.crease * std::numbers::pi / 180 ? edge_kind::crease : edge_kind::smooth;
+}
+
+/// The visible and hidden lines of `polygons` seen from `eye`, from their map
+/// `vm`.  `polygon_of(label)` gives the polygon (an index into `polygons`) a
+/// map label shows, or −1 for none; faces labelled `clipped` are outside the
+/// view.  `polygons` must be the build's input (the map's labels their
+/// indices, or regions of them).
+template <geometry::number FT, class PolygonOf>
+line_set<FT> hidden_lines(visibility_map<FT> const& vm, geometry::e3::point<FT> const& eye, std::vector<polygon<FT>> const& polygons,
+                          PolygonOf&& polygon_of, line_options const& o = {}) {
+  using namespace detail;
+  using S = geometry::s2::sub_hyperplane<FT>;
+  auto t_start = std::chrono::steady_clock::now();
+  line_set<FT> out;
+  out.edges = scene_edges(polygons);
+  out.stats.edges = out.edges.size();
+  auto const& m = vm.map;
+
+  std::vector<eye_plane<FT>> planes;
+  planes.reserve(polygons.size());
+  for (auto const& p : polygons) planes.push_back(plane_of(p, eye));
+  // Polygons seen edge-on, by the line of their plane.
+  std::map<v3<FT>, std::vector<std::uint32_t>> edge_on;
+  for (std::uint32_t i = 0; i < polygons.size(); ++i)
+    if (sgn(planes[i].d) == 0) edge_on[line_key(planes[i].n)].push_back(i);
+
+  auto label_at = [&](index face) -> std::int64_t {
+    std::int64_t l = m.faces()[face].label;
+    if (l == clipped) return clipped;
+    return l < 0 ? -1 : static_cast<std::int64_t>(polygon_of(l));
+  };
+
+  std::vector<std::pair<S, index>> below, across;
+  struct run {
+    FT t0, t1;
+    std::int64_t side[2];
+  };
+  std::vector<run> runs;
+  out.kinds.reserve(out.edges.size());
+  for (std::uint32_t ei = 0; ei < out.edges.size(); ++ei) {
+    auto const& e = out.edges[ei];
+    auto kind = kind_of(e, polygons, eye, o);
+    out.kinds.push_back(kind);
+    auto A = minus(e.a, eye), B = minus(e.b, eye);
+    auto n = cross3x(A, B);
+    if (is_zero3(n)) {
+      ++out.stats.edges_through_eye;
+      continue;
+    }
+    if (kind == edge_kind::never) continue;
+    auto BA = minus(B, A);
+    // The parameter along the edge where a circle through the eye meets it.
+    auto t_at = [&](v3<FT> const& c) { return FT(-dot3x(c, A) / dot3x(c, BA)); };
+
+    // Pieces with the faces on their two sides.
+    runs.clear();
+    below.clear();
+    S arc = geometry::s2::arc(geometry::s2::point<FT>(A), geometry::s2::point<FT>(B));
+    bsp::detail::push_down(vm.locator, std::move(arc), vm.locator.root(), -1, below);
+    for (auto& [piece, right] : below) {
+      across.clear();
+      bsp::detail::push_down(vm.locator, std::move(piece), vm.locator.root(), +1, across);
+      for (auto& [p, left] : across) {
+        if (p.bounds.size() != 2) continue;
+        FT t0 = t_at(p.bounds.front().original.n.exact()), t1 = t_at(p.bounds.back().original.n.exact());
+        if (t1 < t0) std::swap(t0, t1);
+        if (!(t0 < t1)) continue;
+        runs.push_back({std::move(t0), std::move(t1), {label_at(right), label_at(left)}});
+      }
+    }
+    out.stats.arc_pieces += runs.size();
+    std::sort(runs.begin(), runs.end(), [](run const& x, run const& y) { return x.t0 < y.t0; });
+
+    // Polygons seen edge-on in the plane of the edge and the eye.
+    std::vector<std::uint32_t> const* flat = nullptr;
+    if (!edge_on.empty())
+      if (auto it = edge_on.find(line_key(n)); it != edge_on.end()) flat = &it->second, ++out.stats.edge_on_tests;
+    auto incident = [&](std::int64_t q) { return std::find(e.polygons.begin(), e.polygons.end(), static_cast<std::uint32_t>(q)) != e.polygons.end(); };
+    auto x_at = [&](FT const& t) { return v3<FT>{A[0] + t * BA[0], A[1] + t * BA[1], A[2] + t * BA[2]}; };
+    // Whether the open segment from the eye to x meets edge-on polygon g.
+    auto blocks = [&](std::uint32_t g, v3<FT> const& x) {
+      auto const& v = polygons[g].vertices;
+      auto const& N = planes[g].n;
+      FT lo(0), hi(1);
+      for (std::size_t k = 0; k < v.size(); ++k) {
+        auto gk = minus(v[k], eye), gl = minus(v[(k + 1) % v.size()], eye);
+        // Inside edge k where det(N, gl − gk, s·x − gk) ≥ 0: α + s·β.
+        auto w = cross3x(N, minus(gl, gk));
+        FT alpha = -dot3x(w, gk), beta = dot3x(w, x);
+        if (sgn(beta) == 0) {
+          if (sgn(alpha) < 0) return false;
+          continue;
+        }
+        FT s = -alpha / beta;
+        if (sgn(beta) > 0) lo = std::max(lo, s);
+        else hi = std::min(hi, s);
+      }
+      return lo < hi;
+    };
+    auto hidden_at = [&](run const& r, FT const& t) {
+      auto x = x_at(t);
+      for (auto q : r.side)
+        if (q >= 0 && sgn(planes[q].at(x)) == -sgn(planes[q].d)) return true;
+      if (flat)
+        for (auto g : *flat)
+          if (!incident(g) && blocks(g, x)) return true;
+      return false;
+    };
+    std::vector<FT> cuts;
+    for (auto const& r : runs) {
+      if (r.side[0] == clipped || r.side[1] == clipped) continue;
+      // Where the sign of a side's plane, or of an edge-on polygon's side, changes inside the run.
+      cuts.clear();
+      cuts.push_back(r.t0);
+      for (auto q : r.side) {
+        if (q < 0) continue;
+        FT fa = planes[q].at(A), fb = planes[q].at(B);
+        if (sgn(fb - fa) == 0) continue;
+        FT t = -fa / (fb - fa);
+        if (r.t0 < t && t < r.t1) cuts.push_back(t);
+      }
+      if (flat)
+        for (auto g : *flat)
+          for (auto const& vtx : polygons[g].vertices) {
+            auto gv = minus(vtx, eye);
+            auto c = cross3x(n, gv); // a circle through the vertex's direction
+            if (sgn(dot3x(c, BA)) == 0) continue;
+            FT t = t_at(c);
+            if (r.t0 < t && t < r.t1) cuts.push_back(t);
+          }
+      cuts.push_back(r.t1);
+      std::sort(cuts.begin(), cuts.end());
+      cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+      bool outline = false;
+      for (auto q : r.side)
+        if (q < 0 || !incident(q)) outline = true;
+      for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+        bool hidden = hidden_at(r, FT((cuts[k] + cuts[k + 1]) / 2));
+        line_class c;
+        if (hidden) {
+          if (kind == edge_kind::smooth) continue;
+          c = kind == edge_kind::silhouette ? line_class::silhouette : kind == edge_kind::boundary ? line_class::boundary : line_class::crease;
+        } else {
+          if (kind == edge_kind::silhouette) c = line_class::silhouette;
+          else if (kind == edge_kind::boundary) c = line_class::boundary;
+          else if (outline) c = line_class::outline;
+          else if (kind == edge_kind::crease) c = line_class::crease;
+          else continue;
+        }
+        auto& ps = out.pieces;
+        if (!ps.empty() && ps.back().edge == ei && ps.back().hidden == hidden && ps.back().cls == c && ps.back().t1 == cuts[k])
+          ps.back().t1 = cuts[k + 1];
+        else ps.push_back({ei, cuts[k], cuts[k + 1], hidden, c});
+      }
+    }
+  }
+
+  // Visible map edges that are no scene edge: intersection curves, and
+  // shadow boundaries (the same polygon on both sides, lit differently).
+  std::vector<std::vector<std::uint32_t>> edges_of(polygons.size());
+  for (std::uint32_t ei = 0; ei < out.edges.size(); ++ei)
+    for (auto p : out.edges[ei].polygons) edges_of[p].push_back(ei);
+  auto on_edge = [&](index he, std::uint32_t ei) {
+    auto const& e = out.edges[ei];
+    auto A = minus(e.a, eye), B = minus(e.b, eye);
+    auto n = cross3x(A, B);
+    if (is_zero3(n)) return false;
+    auto const c = m.circles()[m.half_edges()[he].circle].n.exact();
+    if (!is_zero3(cross3x(c, n))) return false;
+    for (index v : {m.origin(he), m.target(he)}) {
+      auto const d = m.point(v).exact();
+      if (sgn(dot3x(cross3x(A, d), n)) < 0 || sgn(dot3x(cross3x(d, B), n)) < 0) return false;
+    }
+    return true;
+  };
+  auto const& he = m.half_edges();
+  for (index h = 0; h < he.size(); h += 2) {
+    std::int64_t la = m.faces()[he[h].face].label, lb = m.faces()[he[h + 1].face].label;
+    if (la == lb || la == clipped || lb == clipped) continue;
+    std::int64_t pa = la < 0 ? -1 : static_cast<std::int64_t>(polygon_of(la)), pb = lb < 0 ? -1 : static_cast<std::int64_t>(polygon_of(lb));
+    if (pa == pb) {
+      if (pa >= 0) out.map_lines.push_back({h, line_class::shadow});
+      continue;
+    }
+    bool known = false;
+    for (auto p : {pa, pb}) {
+      if (p < 0 || known) continue;
+      for (auto ei : edges_of[static_cast<std::size_t>(p)])
+        if (on_edge(h, ei)) {
+          known = true;
+          break;
+        }
+    }
+    if (!known) out.map_lines.push_back({h, line_class::intersection});
+  }
+  out.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
+  return out;
+}
+
+/// The lines of `polygons` labelled by their own indices in `vm`.
+template <geometry::number FT>
+line_set<FT> hidden_lines(visibility_map<FT> const& vm, geometry::e3::point<FT> const& eye, std::vector<polygon<FT>> const& polygons,
+                          line_options const& o = {}) {
+  return hidden_lines(vm, eye, polygons, [](std::int64_t l) { return l; }, o);
+}
+
+} // namespace svm
