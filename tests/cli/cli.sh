@@ -306,7 +306,7 @@ check "render --shadows id: the square lit (#000007)" grep -q 'data-face="6" fil
 check "render --shadows id: and in shadow (#800007)" grep -q 'data-face="6" fill="#800007"' "$work/shadow-id.svg"
 check "render --shadows id: the near face lit (#000001)" grep -q 'data-face="0" fill="#000001"' "$work/shadow-id.svg"
 "$genbsp" render "$work/scene.off" --eye 0,0,0 --dir 0,0,1 --up 0,1,0 --style lines --light 1,1,0 --shadows -o "$work/shadow-lines.svg"
-check "render --shadows lines: shadow boundaries in their own group" grep -q 'id="shadow-boundaries"' "$work/shadow-lines.svg"
+check "render --shadows lines: shadow boundaries on their own layer" grep -q 'id="visible-shadow"' "$work/shadow-lines.svg"
 "$genbsp" render "$work/scene.off" --eye 0,0,0 --dir 0,0,1 --light 1,1,0 --light -1,0,0 --shadows -o "$work/shadow.pdf"
 check "render --shadows: PDF" grep -q '^%PDF-' "$work/shadow.pdf"
 expect_error "render: --shadows needs a light" "--light" "$genbsp" render "$work/scene.off" --eye 0,0,0 --shadows -o "$work/x.svg"
@@ -377,6 +377,40 @@ printf 'MULTILINESTRING ((2 -1, 2 1), (4 -3))\n' >"$work/bad-walls.wkt"
 expect_error "visibility2d: a one-point line string" "bad-walls.wkt:1: .*at least 2 positions" "$genbsp" visibility2d "$work/bad-walls.wkt" --eye 0,0 -o "$work/x.wkt"
 expect_error "visibility2d: unknown output format" "unknown output format" "$genbsp" visibility2d "$work/room.wkt" --eye 1,5 -o "$work/x.png"
 check "visibility2d: no file after an error" test ! -e "$work/x.wkt"
+
+# Hidden lines: a cube seen from near a corner shows 6 silhouette and 3
+# crease edges; its 3 far edges are hidden creases.
+box -1 -1 -1 1 1 1 >"$work/cube.off"
+line_count() { # line_count SUMMARY visible|hidden CLASS: edges of that class in the first view
+  python3 -c 'import json, sys; v = json.load(open(sys.argv[1]))["views"][0][sys.argv[2]]; print(v.get(sys.argv[3], {}).get("edges", 0))' "$@"
+}
+"$genbsp" render "$work/cube.off" --eye 3,4,5 --style lines --hidden dashed -o "$work/lines.svg" >"$work/lines.json"
+check "render --hidden dashed: 6 silhouette, 3 crease edges visible" test "$(line_count "$work/lines.json" visible silhouette) $(line_count "$work/lines.json" visible crease)" = "6 3"
+check "render --hidden dashed: 3 crease edges hidden" test "$(line_count "$work/lines.json" hidden crease)" = 3
+check "render --hidden dashed: dashes" grep -q 'stroke-dasharray' "$work/lines.svg"
+check "render --hidden dashed: layers" test "$(grep -c 'inkscape:groupmode="layer"' "$work/lines.svg")" -eq 3
+check "render lines: pen travel shortened" python3 -c 'import json, sys; t = json.load(open(sys.argv[1]))["views"][0]["pen_travel_px"]; assert t["after"] < t["before"]' "$work/lines.json"
+"$genbsp" render "$work/cube.off" --eye 3,4,5 --style lines -o "$work/lines-none.svg" >"$work/summary"
+check "render lines: hidden lines left out by default" test "$(grep -c 'id="hidden-' "$work/lines-none.svg")" -eq 0
+"$genbsp" render "$work/cube.off" --eye 3,4,5 --style lines --hidden layer -o "$work/lines-layer.svg" >"$work/summary"
+check "render --hidden layer: the hidden layer is in the file, not shown" grep -q 'id="hidden-crease"[^>]*display:none' "$work/lines-layer.svg"
+"$genbsp" render "$work/cube.off" --eye 3,4,5 --style lines --hidden thin --split-layers --line-width 2 -o "$work/pens.svg" >"$work/pens.json"
+for layer in visible-silhouette visible-crease hidden-crease; do
+  check "render --split-layers: $layer in a file of its own" test "$(grep -c 'inkscape:groupmode="layer"' "$work/pens-$layer.svg" 2>/dev/null)" = 1
+done
+check "render --split-layers: the files listed" python3 -c 'import json, sys; assert len(json.load(open(sys.argv[1]))["layer_files"]) == 3' "$work/pens.json"
+check "render --line-width: outlines 2 px wide" grep -q 'id="visible-silhouette"[^>]*stroke-width="2"' "$work/pens.svg"
+"$genbsp" render "$work/cube.off" --eye 3,4,5 --style lines --hidden dashed --number double -o "$work/lines-double.svg" >"$work/double.json"
+check "render lines --number double: the same lines" test "$(line_count "$work/double.json" visible silhouette) $(line_count "$work/double.json" hidden crease)" = "6 3"
+"$genbsp" render "$work/cube.off" --view iso --style lines --hidden dashed -o "$work/iso.svg" >"$work/iso.json"
+check "render lines, orthographic iso: 6 silhouette, 3 crease visible, 3 hidden" test "$(line_count "$work/iso.json" visible silhouette) $(line_count "$work/iso.json" visible crease) $(line_count "$work/iso.json" hidden crease)" = "6 3 3"
+"$genbsp" render "$work/cube.off" --eye 3,4,5 --style lines --hidden dashed -o "$work/lines.pdf" >"$work/summary"
+check "render lines: PDF" grep -q '^%PDF-' "$work/lines.pdf"
+expect_error "render: --hidden without --style lines" "--hidden is for --style lines" "$genbsp" render "$work/cube.off" --eye 3,4,5 --hidden dashed -o "$work/x.svg"
+expect_error "render: --split-layers without --style lines" "--split-layers is for --style lines" "$genbsp" render "$work/cube.off" --eye 3,4,5 --split-layers -o "$work/x.svg"
+expect_error "render: --line-width without --style lines" "--line-width is for --style lines" "$genbsp" render "$work/cube.off" --eye 3,4,5 --line-width 2 -o "$work/x.svg"
+expect_error "render: an unknown --hidden" "--hidden" "$genbsp" render "$work/cube.off" --eye 3,4,5 --style lines --hidden dotted -o "$work/x.svg"
+check "render: no file after an error" test ! -e "$work/x.svg"
 
 for sub in map locate stats scene render view shadow bool csg visibility2d; do
   "$genbsp" "$sub" --help >"$work/help" 2>&1

@@ -9,6 +9,7 @@
 #include <svm/parallel.hpp>
 #include <svm/query.hpp>
 #include <svm/render/cairo.hpp>
+#include <svm/render/lines.hpp>
 #include <svm/render/svg.hpp>
 #include <svm/scenes.hpp>
 #include <svm/shadow.hpp>
@@ -152,9 +153,8 @@ svm::visibility_map<FT> map_of(std::vector<svm::polygon<FT>> const& polygons, ge
   return svm::build<FT>(shadowed_pieces(polygons, shadows, o.seed), eye, o);
 }
 
-/// The map in either number type, then a function of it.
-template <class F> auto with_map(map_job const& job, loaded const& l, F&& f, svm::build_options o = {}, shadow_job const& shadows = {}) {
-  auto eye = parse_point(job.eye_text, "--eye");
+/// The build options a map job asks for: simplification, culling, progress.
+void configure(map_job const& job, svm::build_options& o) {
   o.simplify = !job.no_simplify;
   o.cull_backfaces = job.cull;
   // Progress: on a terminal, one updated line once the build has run a
@@ -176,11 +176,61 @@ template <class F> auto with_map(map_job const& job, loaded const& l, F&& f, svm
       std::fflush(stderr);
     };
   }
+}
+
+/// The map in either number type, then a function of it.
+template <class F> auto with_map(map_job const& job, loaded const& l, F&& f, svm::build_options o = {}, shadow_job const& shadows = {}) {
+  auto eye = parse_point(job.eye_text, "--eye");
+  configure(job, o);
   if (job.number == "double") {
     geometry::e3::point<double> e(eye.x().convert_to<double>(), eye.y().convert_to<double>(), eye.z().convert_to<double>());
     return f(map_of<double>(polygons_in<double>(l), e, o, shadows));
   }
   return f(map_of<rational>(polygons_in<rational>(l), eye, o, shadows));
+}
+
+/// A hidden-line drawing of one view: the map of the polygons `seen` (the
+/// scene `scene`, or its image in a parallel view, each polygon labelled by
+/// its own index) from `eye`, and the lines read off it; with lights, the
+/// map of the scene's lit pieces (`carry` takes them to where they are seen).
+/// What it drew goes to `summary`.
+template <class FT, class Carry>
+svm::render::drawing line_view(std::vector<svm::polygon<FT>> const& scene, std::vector<svm::polygon<FT>> const& seen,
+                               geometry::e3::point<FT> const& eye, svm::build_options const& o, shadow_job shadows, Carry&& carry,
+                               svm::projector const& pr, svm::render::line_drawing_options const& lo, double crease, json& summary) {
+  auto t0 = std::chrono::steady_clock::now();
+  std::vector<svm::lit_region> regions;
+  svm::visibility_map<FT> vm;
+  if (shadows.lights.empty()) {
+    vm = svm::build<FT>(seen, eye, o);
+  } else {
+    shadows.regions = &regions;
+    auto pieces = shadowed_pieces(scene, shadows, o.seed);
+    for (auto& p : pieces) carry(p);
+    vm = svm::build<FT>(pieces, eye, o);
+  }
+  auto t1 = std::chrono::steady_clock::now();
+  auto polygon_of = [&](std::int64_t label) -> std::int64_t {
+    return regions.empty() ? label : static_cast<std::int64_t>(regions[static_cast<std::size_t>(label)].face);
+  };
+  auto lines = svm::hidden_lines(vm, eye, seen, polygon_of, {.crease = crease});
+  svm::render::line_drawing_summary s;
+  auto d = svm::render::draw_lines(lines, vm, eye, pr, lo, &s);
+  auto counts = [](std::array<svm::render::line_drawing_summary::count, svm::line_class_count> const& c) {
+    json out = json::object();
+    for (std::size_t k = 0; k < c.size(); ++k)
+      if (c[k].edges || c[k].polylines)
+        out[std::string(svm::name_of(static_cast<svm::line_class>(k)))] = {
+            {"edges", c[k].edges}, {"polylines", c[k].polylines}, {"length_px", std::round(c[k].length * 100) / 100}};
+    return out;
+  };
+  summary = {{"edges", lines.stats.edges},
+             {"edges_through_eye", lines.stats.edges_through_eye},
+             {"visible", counts(s.visible)},
+             {"hidden", counts(s.hidden)},
+             {"pen_travel_px", {{"before", std::round(s.travel_before * 100) / 100}, {"after", std::round(s.travel_after * 100) / 100}}},
+             {"seconds", {{"map", std::chrono::duration<double>(t1 - t0).count()}, {"lines", lines.stats.seconds}}}};
+  return d;
 }
 
 /// The map of a parallel view: the central map of the scene's image from
@@ -654,6 +704,15 @@ int run(int argc, char** argv) {
   render->add_option("--sun", render_suns, "a light at infinity: the direction towards it, DX,DY,DZ (repeatable)");
   render->add_flag("--shadows", render_shadows, "cast the lights' shadows, exactly (lit parts shaded per light, the rest ambient)");
   render->add_option("--crease", crease, "lines: draw edges between polygons only where their planes meet at more than this angle (degrees)")->check(CLI::Range(0.0, 180.0));
+  std::string hidden_name = "none";
+  bool split_layers = false;
+  double line_width = 0;
+  render->add_option("--hidden", hidden_name,
+                     "lines: hidden edges not drawn (none, default), dashed, thin, or dashed on layers the document hides (layer)")
+      ->check(CLI::IsMember({"none", "dashed", "thin", "layer"}));
+  render->add_flag("--split-layers", split_layers, "lines: also write each layer (one pen) to OUT-LAYER.EXT, e.g. out-visible-outline.svg");
+  render->add_option("--line-width", line_width, "lines: width of visible outlines in pixels (default: the larger image side / 800)")
+      ->check(CLI::Range(0.001, 1000.0));
   render->add_option("--shift", shift_text, "perspective image-plane shift SX,SY in image half-widths (keeps verticals vertical)");
   render->add_option("--tolerance", tolerance, "fisheye and panorama: arcs subdivided to this many pixels (default 0.1)")->check(CLI::Range(0.001, 100.0));
   render->add_option("--precision", digits, "SVG coordinate decimals (default 2)")->check(CLI::Range(0, 9));
@@ -934,6 +993,9 @@ int run(int argc, char** argv) {
     }
     svm::render::options ro;
     ro.style = *svm::render::style_from_name(style_name);
+    if (ro.style != svm::render::style::lines && (hidden_name != "none" || line_width > 0))
+      throw usage_error(std::string(hidden_name != "none" ? "--hidden" : "--line-width") + " is for --style lines");
+    if (split_layers && ro.style != svm::render::style::lines) throw usage_error("--split-layers is for --style lines");
     ro.crease = crease;
     ro.tolerance = tolerance;
     ro.eye = eye;
@@ -970,6 +1032,7 @@ int run(int argc, char** argv) {
     }
     auto kind = cube || ortho ? svm::projection::perspective : *svm::projection_from_name(projection_name);
     std::vector<std::pair<svm::render::drawing, std::string>> drawings;
+    std::vector<json> line_summaries;
     for (auto const& [c, path] : views) {
       std::optional<svm::projector> pr;
       try {
@@ -978,11 +1041,58 @@ int run(int argc, char** argv) {
         throw usage_error(e.what());
       }
       svm::build_options o = pr->window_options();
+      if (ro.style == svm::render::style::lines) {
+        configure(rj, o);
+        svm::render::line_drawing_options lo{.hidden = *svm::render::hidden_style_from_name(hidden_name), .tolerance = tolerance, .width = line_width};
+        json s;
+        svm::render::drawing d;
+        auto relabel = [](auto polygons) {
+          for (std::uint32_t i = 0; i < polygons.size(); ++i) polygons[i].face = i;
+          return polygons;
+        };
+        if (ortho) {
+          auto scene = relabel(polygons_in<rational>(l));
+          d = line_view<rational>(scene, parallel->image(scene), parallel->eye(), o, shadows,
+                                  [&](svm::convex_piece<rational>& p) { p.shape = parallel->carry(p.shape, true); }, *pr, lo, crease, s);
+        } else if (rj.number == "double") {
+          auto e = parse_point(rj.eye_text, "--eye");
+          geometry::e3::point<double> ed(e.x().convert_to<double>(), e.y().convert_to<double>(), e.z().convert_to<double>());
+          auto scene = relabel(polygons_in<double>(l));
+          d = line_view<double>(scene, scene, ed, o, shadows, [](svm::convex_piece<double>&) {}, *pr, lo, crease, s);
+        } else {
+          auto scene = relabel(polygons_in<rational>(l));
+          d = line_view<rational>(scene, scene, parse_point(rj.eye_text, "--eye"), o, shadows, [](svm::convex_piece<rational>&) {}, *pr, lo,
+                                  crease, s);
+        }
+        json entry{{"output", path}};
+        entry.update(s);
+        line_summaries.push_back(std::move(entry));
+        drawings.push_back({std::move(d), path});
+        continue;
+      }
       auto d = ortho ? svm::render::draw(orthographic_map(rj, *parallel, image_polygons, l, o, shadows), *pr, infos, ro)
                      : with_map(rj, l, [&](auto const& vm) { return svm::render::draw(vm, *pr, infos, ro); }, o, shadows);
       drawings.push_back({std::move(d), path});
     }
+    // Every file is made before any is written, so that a failure leaves none half-done.
+    std::vector<std::pair<svm::render::drawing, std::string>> layer_files;
+    if (split_layers) {
+      for (auto const& [d, path] : drawings)
+        for (std::size_t k = 0; k < d.layers.size(); ++k) {
+          std::filesystem::path p(path);
+          layer_files.push_back({svm::render::single_layer(d, k),
+                                 (p.parent_path() / (p.stem().string() + "-" + d.layers[k].name + p.extension().string())).string()});
+        }
+    }
     for (auto const& [d, path] : drawings) write_drawing(d, path, digits);
+    for (auto const& [d, path] : layer_files) write_drawing(d, path, digits);
+    if (ro.style == svm::render::style::lines) {
+      json layers = json::array();
+      for (auto const& [d, path] : layer_files) layers.push_back(path);
+      json out{{"views", line_summaries}};
+      if (split_layers) out["layer_files"] = layers;
+      std::cout << out.dump() << "\n";
+    }
   } else if (*view) {
     std::string ext = std::filesystem::path(view_out).extension().string();
     for (auto& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
