@@ -1,9 +1,16 @@
 // Shared by the benchmark programs: what built them, and JSON strings.
 #pragma once
 
+#include <geometry/number.hpp>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
 #include <cstdio>
+#include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace bench {
 
@@ -43,6 +50,31 @@ inline std::string json_string(std::string_view s) {
     }
   }
   return out + "\"";
+}
+
+/// The point X,Y,Z (exact numbers, as the command line writes them).
+inline std::array<geometry::rational, 3> parse_point(std::string_view text, std::string_view what) {
+  std::array<geometry::rational, 3> p;
+  std::size_t at = 0;
+  for (std::size_t k = 0; k < 3; ++k) {
+    std::size_t comma = k < 2 ? text.find(',', at) : text.size();
+    if (comma == std::string_view::npos) throw std::invalid_argument(std::string(what) + ": expected X,Y,Z");
+    p[k] = geometry::parse_number<geometry::rational>(text.substr(at, comma - at));
+    at = comma + 1;
+  }
+  return p;
+}
+
+/// The median wall-clock time of `runs` calls of `f`, in seconds.
+template <class F> double median_seconds(int runs, F&& f) {
+  std::vector<double> t;
+  for (int r = 0; r < runs; ++r) {
+    auto t0 = std::chrono::steady_clock::now();
+    f();
+    t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  }
+  std::sort(t.begin(), t.end());
+  return t[t.size() / 2];
 }
 
 } // namespace bench

@@ -180,17 +180,6 @@ long gl2ps_svg(std::vector<poly> const& scene, view const& v, double far, std::s
 }
 #endif
 
-template <class F> double median_seconds(int runs, F&& f) {
-  std::vector<double> t;
-  for (int r = 0; r < runs; ++r) {
-    auto t0 = std::chrono::steady_clock::now();
-    f();
-    t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-  }
-  std::sort(t.begin(), t.end());
-  return t[t.size() / 2];
-}
-
 } // namespace
 
 int main(int argc, char** argv) {
@@ -209,16 +198,7 @@ int main(int argc, char** argv) {
   try {
     auto s = geometry::io::read_scene(path);
     auto prepared = geometry::io::convex_polygons(s);
-    std::array<geometry::rational, 3> eye;
-    {
-      std::size_t at = 0;
-      for (int k = 0; k < 3; ++k) {
-        std::size_t comma = k < 2 ? eye_text.find(',', at) : eye_text.size();
-        if (comma == std::string::npos) throw std::invalid_argument("--eye: expected X,Y,Z");
-        eye[static_cast<std::size_t>(k)] = geometry::parse_number<geometry::rational>(std::string_view(eye_text).substr(at, comma - at));
-        at = comma + 1;
-      }
-    }
+    auto eye = bench::parse_point(eye_text, "--eye");
     std::vector<poly> scene;
     vec3 lo{HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
     for (auto const& p : prepared.polygons) {
@@ -260,11 +240,11 @@ int main(int argc, char** argv) {
       auto in_view = svm::projector(cam, svm::projection::perspective).window_options();
       std::size_t faces = 0, all_faces = 0;
       svm::build_statistics view_stats;
-      double t = median_seconds(runs, [&] {
+      double t = bench::median_seconds(runs, [&] {
         view_stats = svm::build<geometry::rational>(polys, eye_q, in_view).stats;
         faces = view_stats.simplified.faces;
       });
-      double t_all = median_seconds(runs, [&] { all_faces = svm::build<geometry::rational>(polys, eye_q).stats.simplified.faces; });
+      double t_all = bench::median_seconds(runs, [&] { all_faces = svm::build<geometry::rational>(polys, eye_q).stats.simplified.faces; });
       std::printf(", \"map_seconds\": %.6g, \"map_faces\": %zu, \"sphere_map_seconds\": %.6g, \"sphere_map_faces\": %zu", t, faces,
                   t_all, all_faces);
       // Where the view's build goes (its last run).
@@ -279,7 +259,7 @@ int main(int argc, char** argv) {
     std::vector<std::uint32_t> id(depth.size());
     std::size_t covered = 0;
     std::size_t tested = 0;
-    double tz = median_seconds(runs, [&] { covered = zbuffer(scene, v, depth, id, tested); });
+    double tz = bench::median_seconds(runs, [&] { covered = zbuffer(scene, v, depth, id, tested); });
     std::printf(", \"zbuffer_seconds\": %.6g, \"zbuffer_pixels\": %zu, \"zbuffer_depth_tests\": %zu", tz, covered, tested);
 #ifdef GENBSP_BENCH_GL2PS
     // The off-screen context, made once, outside the timing.
@@ -287,7 +267,7 @@ int main(int argc, char** argv) {
     OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, nullptr);
     if (!ctx || !OSMesaMakeCurrent(ctx, pixels.data(), GL_UNSIGNED_BYTE, size, size)) throw std::runtime_error("no OSMesa context");
     long bytes = 0;
-    double tg = median_seconds(runs, [&] { bytes = gl2ps_svg(scene, v, far, svg); });
+    double tg = bench::median_seconds(runs, [&] { bytes = gl2ps_svg(scene, v, far, svg); });
     if (bytes > 0) std::printf(", \"gl2ps_seconds\": %.6g, \"gl2ps_bytes\": %ld", tg, bytes);
     else std::printf(", \"gl2ps_error\": \"no output\"");
     OSMesaDestroyContext(ctx);
