@@ -132,9 +132,12 @@ template <class FT> struct eye_plane {
   FT at(v3<FT> const& x) const { return dot3x(n, x) + d; }
 };
 
+/// (From the first vertex and two others not on a line with it: a polygon
+/// may have vertices in the middle of its sides.)
 template <class FT> eye_plane<FT> plane_of(polygon<FT> const& p, geometry::e3::point<FT> const& eye) {
-  auto a = minus(p.vertices[0], eye), b = minus(p.vertices[1], eye), c = minus(p.vertices[2], eye);
-  auto n = cross3x(minus(b, a), minus(c, a));
+  auto a = minus(p.vertices[0], eye), b = minus(p.vertices[1], eye);
+  v3<FT> n{};
+  for (std::size_t k = 2; k < p.vertices.size() && is_zero3(n); ++k) n = cross3x(minus(b, a), minus(minus(p.vertices[k], eye), a));
   return {n, -dot3x(n, a)};
 }
 
@@ -167,23 +170,51 @@ template <class FT> double to_double(FT const& x) {
 
 } // namespace detail
 
-/// The edges of `polygons`, each once: vertices welded by exact coordinates.
+/// The edges of `polygons`, each once: vertices welded by exact
+/// coordinates, and sides along one line cut at each other's ends, so that
+/// a side meeting several sides of neighbours (a T-junction, as Boolean
+/// operations leave them) makes one edge per run shared by the same
+/// polygons.  A run of a side no other polygon shares is a boundary edge.
 template <geometry::number FT> std::vector<scene_edge<FT>> scene_edges(std::vector<polygon<FT>> const& polygons) {
-  std::map<std::array<FT, 3>, std::uint32_t> ids;
+  using namespace detail;
+  using key = std::array<FT, 3>;
+  std::map<key, std::uint32_t> ids;
   auto id = [&](geometry::e3::point<FT> const& p) {
     return ids.try_emplace({p.x(), p.y(), p.z()}, static_cast<std::uint32_t>(ids.size())).first->second;
   };
-  std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> at;
-  std::vector<scene_edge<FT>> out;
+  // The sides on each line, the line keyed by its direction (scaled to a
+  // first non-zero coordinate of 1) and its moment about the origin.
+  struct side {
+    FT t0, t1; // along the direction, t0 < t1
+    geometry::e3::point<FT> const *a, *b;
+    std::uint32_t polygon;
+  };
+  std::map<std::pair<key, key>, std::vector<side>> lines;
   for (std::uint32_t i = 0; i < polygons.size(); ++i) {
     auto const& v = polygons[i].vertices;
     for (std::size_t k = 0; k < v.size(); ++k) {
-      auto const &a = v[k], &b = v[(k + 1) % v.size()];
-      std::uint32_t ia = id(a), ib = id(b);
-      if (ia == ib) continue;
-      auto [it, fresh] = at.try_emplace(std::minmax(ia, ib), static_cast<std::uint32_t>(out.size()));
-      if (fresh) out.push_back(ia < ib ? scene_edge<FT>{a, b, ia, ib, {i}} : scene_edge<FT>{b, a, ib, ia, {i}});
-      else if (out[it->second].polygons.back() != i) out[it->second].polygons.push_back(i);
+      auto const *a = &v[k], *b = &v[(k + 1) % v.size()];
+      if (*a == *b) continue;
+      auto d = line_key(minus(*b, *a));
+      key at{a->x(), a->y(), a->z()};
+      FT ta = dot3x(d, at), tb = dot3x(d, key{b->x(), b->y(), b->z()});
+      if (tb < ta) std::swap(a, b), std::swap(ta, tb);
+      lines[{d, cross3x(at, d)}].push_back({ta, tb, a, b, i});
+    }
+  }
+  std::vector<scene_edge<FT>> out;
+  for (auto& [line, sides] : lines) {
+    // Cut at every end: between consecutive ends, the sides that cover the run.
+    std::map<FT, geometry::e3::point<FT> const*> ends;
+    for (auto const& s : sides) ends.emplace(s.t0, s.a), ends.emplace(s.t1, s.b);
+    for (auto it = ends.begin(); std::next(it) != ends.end(); ++it) {
+      auto next = std::next(it);
+      std::vector<std::uint32_t> on;
+      for (auto const& s : sides)
+        if (s.t0 <= it->first && next->first <= s.t1 && std::find(on.begin(), on.end(), s.polygon) == on.end()) on.push_back(s.polygon);
+      if (on.empty()) continue;
+      auto const &a = *it->second, &b = *next->second;
+      out.push_back({a, b, id(a), id(b), std::move(on)});
     }
   }
   return out;
@@ -195,10 +226,12 @@ edge_kind kind_of(scene_edge<FT> const& e, std::vector<polygon<FT>> const& polyg
   using namespace detail;
   if (e.polygons.size() == 1) return edge_kind::boundary;
   if (e.polygons.size() > 2) return edge_kind::crease;
-  // A vertex of each polygon off the edge (strictly convex: any other vertex).
+  // A vertex of each polygon off the edge's line (a convex polygon may have
+  // vertices in the middle of its sides).
+  auto E0 = minus(e.b, e.a);
   auto off = [&](polygon<FT> const& p) -> geometry::e3::point<FT> const& {
     for (auto const& v : p.vertices)
-      if (!(v == e.a) && !(v == e.b)) return v;
+      if (!is_zero3(cross3x(E0, minus(v, e.a)))) return v;
     return p.vertices[0];
   };
   auto const &p = polygons[e.polygons[0]], &q = polygons[e.polygons[1]];
@@ -381,12 +414,10 @@ line_set<FT> hidden_lines(visibility_map<FT> const& vm, geometry::e3::point<FT> 
 
   // Visible map edges that are no scene edge: intersection curves, and
   // shadow boundaries (the same polygon on both sides, lit differently).
-  std::vector<std::vector<std::uint32_t>> edges_of(polygons.size());
-  for (std::uint32_t ei = 0; ei < out.edges.size(); ++ei)
-    for (auto p : out.edges[ei].polygons) edges_of[p].push_back(ei);
-  auto on_edge = [&](index he, std::uint32_t ei) {
-    auto const& e = out.edges[ei];
-    auto A = minus(e.a, eye), B = minus(e.b, eye);
+  // Whether map edge `he` lies on the side a–b of a polygon (its sides
+  // whole: a run of scene edges cut at T-junctions may hold one map edge).
+  auto on_side = [&](index he, geometry::e3::point<FT> const& a, geometry::e3::point<FT> const& b) {
+    auto A = minus(a, eye), B = minus(b, eye);
     auto n = cross3x(A, B);
     if (is_zero3(n)) return false;
     auto const c = m.circles()[m.half_edges()[he].circle].n.exact();
@@ -409,11 +440,8 @@ line_set<FT> hidden_lines(visibility_map<FT> const& vm, geometry::e3::point<FT> 
     bool known = false;
     for (auto p : {pa, pb}) {
       if (p < 0 || known) continue;
-      for (auto ei : edges_of[static_cast<std::size_t>(p)])
-        if (on_edge(h, ei)) {
-          known = true;
-          break;
-        }
+      auto const& v = polygons[static_cast<std::size_t>(p)].vertices;
+      for (std::size_t k = 0; k < v.size() && !known; ++k) known = on_side(h, v[k], v[(k + 1) % v.size()]);
     }
     if (!known) out.map_lines.push_back({h, line_class::intersection});
   }

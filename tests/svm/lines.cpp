@@ -73,6 +73,7 @@ bool meets(std::vector<R3> const& v, R3 const& n, R3 const& o, R3 const& x) {
 
 struct check_result {
   std::size_t samples = 0, wrong = 0, pieces = 0, hidden_pieces = 0, gaps = 0;
+  std::size_t intersections = 0; ///< map edges drawn as intersection curves
 };
 
 /// A polygon for the ray caster, with a double copy of its plane to skip, with
@@ -88,8 +89,8 @@ struct caster_polygon {
 std::vector<caster_polygon> caster(std::vector<svm::polygon<Q>> const& polygons) {
   std::vector<caster_polygon> out;
   for (auto const& g : polygons) {
-    R3 a = raw(g.vertices[0]);
-    R3 n = test::ref_cross(sub(raw(g.vertices[1]), a), sub(raw(g.vertices[2]), a));
+    R3 a = raw(g.vertices[0]), n{};
+    for (std::size_t k = 2; k < g.vertices.size() && n == R3{}; ++k) n = test::ref_cross(sub(raw(g.vertices[1]), a), sub(raw(g.vertices[k]), a));
     caster_polygon c{{}, n, {}, {}, 0, {}};
     for (auto const& p : g.vertices) c.vertices.push_back(raw(p));
     double size = 0;
@@ -191,7 +192,9 @@ std::vector<svm::polygon<Q>> relabelled(std::vector<svm::polygon<Q>> p) {
 check_result run(std::vector<svm::polygon<Q>> const& polys, P const& eye, double crease = 0) {
   auto vm = svm::build<Q>(polys, eye, {});
   auto ls = svm::hidden_lines(vm, eye, polys, {.crease = crease});
-  return check_lines(ls, polys, eye);
+  auto r = check_lines(ls, polys, eye);
+  for (auto const& ml : ls.map_lines) r.intersections += ml.cls == svm::line_class::intersection;
+  return r;
 }
 
 /// Counts of scene edges by class and visibility.
@@ -209,6 +212,38 @@ std::map<std::string, std::size_t> counts_of(std::vector<svm::polygon<Q>> const&
 }
 
 using counted = std::map<std::string, std::size_t>;
+
+/// `polys` with every other quadrilateral (from `first`) cut in two between
+/// the midpoints of two opposite sides: T-junctions where a neighbour keeps
+/// those sides whole.  Polygons are labelled by their indices.
+std::vector<svm::polygon<Q>> split_quads(std::vector<svm::polygon<Q>> const& polys, std::size_t first) {
+  std::vector<svm::polygon<Q>> out;
+  auto mid = [](P const& a, P const& b) { return P((a.x() + b.x()) / 2, (a.y() + b.y()) / 2, (a.z() + b.z()) / 2); };
+  for (std::size_t i = 0; i < polys.size(); ++i) {
+    auto const& v = polys[i].vertices;
+    if (v.size() != 4 || i % 2 != first) {
+      out.push_back(polys[i]);
+      continue;
+    }
+    P m01 = mid(v[0], v[1]), m23 = mid(v[2], v[3]);
+    out.push_back({{v[0], m01, m23, v[3]}, 0});
+    out.push_back({{m01, v[1], v[2], m23}, 0});
+  }
+  return relabelled(out);
+}
+
+/// The drawn length of each class, visible and hidden, in a 400 × 300 view.
+std::vector<double> drawn_lengths(std::vector<svm::polygon<Q>> const& polys, P const& eye, svm::camera cam) {
+  svm::projector pr(cam, svm::projection::perspective);
+  auto vm = svm::build<Q>(polys, eye, pr.window_options());
+  auto ls = svm::hidden_lines(vm, eye, polys);
+  svm::render::line_drawing_summary s;
+  svm::render::draw_lines(ls, vm, eye, pr, {.hidden = svm::render::hidden_style::dashed}, &s);
+  std::vector<double> out;
+  for (auto const& c : s.visible) out.push_back(c.length);
+  for (auto const& c : s.hidden) out.push_back(c.length);
+  return out;
+}
 
 } // namespace
 
@@ -247,6 +282,31 @@ TEST_CASE("hidden lines: line counts of boxes match hand counts", "[lines]") {
     auto r = run(polys, P(Q(3), Q(4), Q(5)));
     CHECK(r.wrong == 0);
     CHECK(r.gaps == 0);
+  }
+  SECTION("faces cut in two, their neighbours' sides whole (T-junctions), draw the same lines") {
+    // Every other face of the cube cut in two: two of its sides meet two
+    // sides of neighbours each.
+    P eye(Q(3), Q(4), Q(5));
+    svm::camera cam;
+    cam.forward = {-3, -4, -5};
+    cam.up = {0, 0, 1};
+    cam.width = 400, cam.height = 300;
+    auto plain = drawn_lengths(cube.polygons, eye, cam);
+    for (std::size_t first : {0, 1}) {
+      auto cut = split_quads(cube.polygons, first);
+      auto lengths = drawn_lengths(cut, eye, cam);
+      REQUIRE(lengths.size() == plain.size());
+      for (std::size_t k = 0; k < plain.size(); ++k) {
+        INFO("cut from " << first << ", class " << svm::name_of(static_cast<svm::line_class>(k % svm::line_class_count)) << (k < svm::line_class_count ? " visible" : " hidden"));
+        CHECK(lengths[k] == Approx(plain[k]).margin(1e-6));
+      }
+      auto c = counts_of(cut, eye);
+      CHECK(c.count("visible boundary") == 0);
+      CHECK(c.count("hidden boundary") == 0);
+      auto r = run(cut, eye);
+      CHECK(r.wrong == 0);
+      CHECK(r.gaps == 0);
+    }
   }
   SECTION("a square cut into two triangles: the diagonal is never drawn") {
     std::vector<svm::polygon<Q>> polys{{{P(Q(0), Q(0), Q(0)), P(Q(1), Q(0), Q(0)), P(Q(1), Q(1), Q(0))}, 0},
@@ -291,10 +351,12 @@ TEST_CASE("hidden lines: line counts of boxes match hand counts", "[lines]") {
 TEST_CASE("hidden lines agree with an exact ray cast at sampled points", "[lines]") {
   check_result total;
   std::size_t scenes = 0;
-  auto add = [&](std::string const& name, std::vector<svm::polygon<Q>> const& polys, P const& eye, double crease = 0) {
+  // `crossing`: whether polygons may cross (elsewhere no intersection curve may be drawn).
+  auto add = [&](std::string const& name, std::vector<svm::polygon<Q>> const& polys, P const& eye, double crease = 0, bool crossing = true) {
     auto r = run(relabelled(polys), eye, crease);
     INFO(name);
     CHECK(r.wrong == 0);
+    if (!crossing) CHECK(r.intersections == 0);
     CHECK(r.gaps == 0);
     CHECK(r.pieces > 0);
     total.samples += r.samples, total.wrong += r.wrong, total.pieces += r.pieces, total.hidden_pieces += r.hidden_pieces, total.gaps += r.gaps;
@@ -302,7 +364,7 @@ TEST_CASE("hidden lines agree with an exact ray cast at sampled points", "[lines
   };
   for (std::size_t n : {2, 4, 6}) {
     auto b = svm::scenes::bricks(n);
-    add("bricks " + std::to_string(n), b.polygons, b.eye);
+    add("bricks " + std::to_string(n), b.polygons, b.eye, 0, false);
     auto h = svm::scenes::hidden_bricks(n);
     add("hidden bricks " + std::to_string(n), h.polygons, h.eye);
     auto p = svm::scenes::platforms(n);
@@ -331,7 +393,10 @@ TEST_CASE("hidden lines agree with an exact ray cast at sampled points", "[lines
                           P(Q(-2), Q(-2), Q(2)),                  // on the line of an edge direction (x = y) and a plane z = 2
                           P(Q(-4), Q(1), Q(1)),                   // on the line y = 1, z = 1 of edges
                           P(Q(7, 2), Q(-13, 3), Q(11, 5))};        // generic
-    add("grid cubes " + std::to_string(seed), s.polygons, eyes[static_cast<std::size_t>(seed) % 4]);
+    add("grid cubes " + std::to_string(seed), s.polygons, eyes[static_cast<std::size_t>(seed) % 4], 0, false);
+    // The same with T-junctions: every other quadrilateral cut in two.
+    add("grid cubes with T-junctions " + std::to_string(seed), split_quads(s.polygons, static_cast<std::size_t>(seed) % 2),
+        eyes[static_cast<std::size_t>(seed) % 4], 0, false);
   }
   std::cout << "hidden lines: " << scenes << " scenes, " << total.pieces << " pieces (" << total.hidden_pieces << " hidden), "
             << total.samples << " samples checked by ray casting, " << total.wrong << " wrong, " << total.gaps << " gaps\n";
