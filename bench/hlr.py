@@ -33,11 +33,14 @@ def main():
     p.add_argument("--out", default=str(ROOT / "build/bench-hlr"), help="output directory (default build/bench-hlr)")
     p.add_argument("--json", help="also write the measurements here")
     p.add_argument("--plot", help="write a plot here (SVG)")
+    p.add_argument("--from-json", nargs="+", help="run nothing: read these measurements (from --json) instead")
     a = p.parse_args()
     out = pathlib.Path(a.out)
     out.mkdir(parents=True, exist_ok=True)
     rows = []
-    for item in a.scenes.split(","):
+    for f in a.from_json or []:
+        rows += json.loads(pathlib.Path(f).read_text())
+    for item in [] if a.from_json else a.scenes.split(","):
         family, n = item.split(":")
         scene = out / f"{family}-{n}.off"
         subprocess.run([a.genbsp, "scene", family, "--n", n, "-o", str(scene)], check=True, capture_output=True, text=True)
