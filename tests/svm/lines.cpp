@@ -404,6 +404,52 @@ TEST_CASE("hidden lines agree with an exact ray cast at sampled points", "[lines
   CHECK(total.hidden_pieces > 0);
 }
 
+TEST_CASE("pen-travel ordering: the grid search picks what a scan of every line picks", "[lines][render]") {
+  using svm::pixel;
+  for (int seed = 0; seed < 6; ++seed) {
+    // Integer ends on a small board (many ties), or spread wide, or all on one point.
+    std::vector<std::vector<pixel>> lines;
+    std::size_t n = seed == 5 ? 40 : 300 + 200 * static_cast<std::size_t>(seed);
+    for (std::size_t i = 0; i < n; ++i) {
+      auto at = [&] {
+        if (seed == 5) return pixel{7, 7};
+        long span = seed % 2 ? 5000 : 40;
+        return pixel{static_cast<double>(test::uniform(-span / 4, span)), static_cast<double>(test::uniform(0, span))};
+      };
+      lines.push_back({at(), at()});
+    }
+    // The plain greedy order, O(n²).
+    std::vector<std::vector<pixel>> expected, copy = lines;
+    std::vector<char> done(n, 0);
+    pixel pen{0, 0};
+    for (std::size_t k = 0; k < n; ++k) {
+      std::size_t best = 0;
+      bool reverse = false;
+      double bd = HUGE_VAL;
+      for (std::size_t i = 0; i < n; ++i) {
+        if (done[i]) continue;
+        double a = std::hypot(copy[i].front().x - pen.x, copy[i].front().y - pen.y);
+        double b = std::hypot(copy[i].back().x - pen.x, copy[i].back().y - pen.y);
+        if (a < bd) bd = a, best = i, reverse = false;
+        if (b < bd) bd = b, best = i, reverse = true;
+      }
+      done[best] = 1;
+      if (reverse) std::reverse(copy[best].begin(), copy[best].end());
+      pen = copy[best].back();
+      expected.push_back(copy[best]);
+    }
+    std::vector<std::vector<pixel>> got;
+    svm::render::detail::order_for_travel(lines, got);
+    REQUIRE(got.size() == expected.size());
+    std::size_t same = 0;
+    for (std::size_t k = 0; k < n; ++k)
+      same += got[k].front().x == expected[k].front().x && got[k].front().y == expected[k].front().y &&
+              got[k].back().x == expected[k].back().x && got[k].back().y == expected[k].back().y;
+    INFO("seed " << seed);
+    CHECK(same == n);
+  }
+}
+
 TEST_CASE("hidden-line drawings: layers, dashes, pen travel", "[lines][render]") {
   svm::scenes::scene cube;
   svm::scenes::add_box(cube, P(Q(-1), Q(-1), Q(-1)), P(Q(1), Q(1), Q(1)));

@@ -15,6 +15,9 @@
 #include "../query.hpp"
 #include "../shadow.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -291,6 +294,72 @@ inline double pen_travel(std::vector<std::vector<pixel>> const& lines) {
   return d;
 }
 
+/// Appends `lines` to `result` in greedy order: from the image's origin,
+/// next the line with an end nearest the pen (ties: the lower index, its
+/// start first), drawn from that end.  The ends are kept in a uniform grid
+/// searched ring by ring, so that n lines take about n·√n steps at worst,
+/// not n².
+inline void order_for_travel(std::vector<std::vector<pixel>>& lines, std::vector<std::vector<pixel>>& result) {
+  std::size_t n = lines.size();
+  if (n == 0) return;
+  double x0 = HUGE_VAL, y0 = HUGE_VAL, x1 = -HUGE_VAL, y1 = -HUGE_VAL;
+  for (auto const& l : lines)
+    for (auto const* p : {&l.front(), &l.back()}) x0 = std::min(x0, p->x), y0 = std::min(y0, p->y), x1 = std::max(x1, p->x), y1 = std::max(y1, p->y);
+  auto g = static_cast<std::size_t>(std::ceil(std::sqrt(static_cast<double>(n) / 2)));
+  double cell = std::max({(x1 - x0) / static_cast<double>(g), (y1 - y0) / static_cast<double>(g), 1e-9});
+  auto cell_of = [&](double v, double lo) {
+    return static_cast<std::ptrdiff_t>(std::clamp(std::floor((v - lo) / cell), 0.0, static_cast<double>(g - 1)));
+  };
+  // Each cell: the ends in it, as line index · 2 + (1 for the back end).
+  std::vector<std::vector<std::size_t>> grid(g * g);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t back : {0, 1}) {
+      auto const& p = back ? lines[i].back() : lines[i].front();
+      grid[static_cast<std::size_t>(cell_of(p.y, y0)) * g + static_cast<std::size_t>(cell_of(p.x, x0))].push_back(2 * i + back);
+    }
+  std::vector<char> done(n, 0);
+  pixel pen{0, 0};
+  auto const G = static_cast<std::ptrdiff_t>(g);
+  for (std::size_t k = 0; k < n; ++k) {
+    std::ptrdiff_t cx = cell_of(pen.x, x0), cy = cell_of(pen.y, y0);
+    double bd = HUGE_VAL;
+    std::size_t best = SIZE_MAX; // line index · 2 + back
+    for (std::ptrdiff_t r = 0; r < G; ++r) {
+      // Cells at Chebyshev distance r from the pen's (clamped) cell.
+      auto visit = [&](std::ptrdiff_t x, std::ptrdiff_t y) {
+        auto& bucket = grid[static_cast<std::size_t>(y * G + x)];
+        for (std::size_t j = 0; j < bucket.size();) {
+          std::size_t e = bucket[j];
+          if (done[e / 2]) {
+            bucket[j] = bucket.back(), bucket.pop_back();
+            continue;
+          }
+          auto const& p = e % 2 ? lines[e / 2].back() : lines[e / 2].front();
+          double d = std::hypot(p.x - pen.x, p.y - pen.y);
+          if (d < bd || (d == bd && e < best)) bd = d, best = e;
+          ++j;
+        }
+      };
+      for (std::ptrdiff_t y = std::max<std::ptrdiff_t>(0, cy - r); y <= std::min(G - 1, cy + r); ++y) {
+        if (y == cy - r || y == cy + r) {
+          for (std::ptrdiff_t x = std::max<std::ptrdiff_t>(0, cx - r); x <= std::min(G - 1, cx + r); ++x) visit(x, y);
+        } else {
+          if (cx - r >= 0) visit(cx - r, y);
+          if (cx + r <= G - 1) visit(cx + r, y);
+        }
+      }
+      // Unvisited cells are at least r cells away from the pen.
+      if (best != SIZE_MAX && bd < static_cast<double>(r) * cell) break;
+    }
+    if (best == SIZE_MAX) break; // (not reached: a line is left)
+    std::size_t i = best / 2;
+    done[i] = 1;
+    if (best % 2) std::reverse(lines[i].begin(), lines[i].end());
+    pen = lines[i].back();
+    result.push_back(std::move(lines[i]));
+  }
+}
+
 /// Joins `pieces` into polylines at ends where exactly two meet (and their
 /// images agree: not across the panorama's seam), then orders them greedily
 /// (nearest end next) to shorten pen travel, appending them to `result`.
@@ -351,24 +420,7 @@ inline std::size_t assemble(std::vector<line_image> const& pieces, bool perspect
     if (!used[i] && (at[pieces[i].from].size() != 2 || at[pieces[i].to].size() != 2)) run(i);
   for (std::size_t i = 0; i < pieces.size(); ++i)
     if (!used[i]) run(i);
-  std::vector<char> done(lines.size(), 0);
-  pixel pen{0, 0};
-  for (std::size_t n = 0; n < lines.size(); ++n) {
-    std::size_t best = 0;
-    bool reverse = false;
-    double bd = HUGE_VAL;
-    for (std::size_t i = 0; i < lines.size(); ++i) {
-      if (done[i]) continue;
-      double a = std::hypot(lines[i].front().x - pen.x, lines[i].front().y - pen.y);
-      double b = std::hypot(lines[i].back().x - pen.x, lines[i].back().y - pen.y);
-      if (a < bd) bd = a, best = i, reverse = false;
-      if (b < bd) bd = b, best = i, reverse = true;
-    }
-    done[best] = 1;
-    if (reverse) std::reverse(lines[best].begin(), lines[best].end());
-    pen = lines[best].back();
-    result.push_back(std::move(lines[best]));
-  }
+  order_for_travel(lines, result);
   return pieces.size() - straight_joins;
 }
 
