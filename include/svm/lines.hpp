@@ -171,10 +171,12 @@ template <class FT> double to_double(FT const& x) {
 } // namespace detail
 
 /// The edges of `polygons`, each once: vertices welded by exact
-/// coordinates, and sides along one line cut at each other's ends, so that
-/// a side meeting several sides of neighbours (a T-junction, as Boolean
-/// operations leave them) makes one edge per run shared by the same
-/// polygons.  A run of a side no other polygon shares is a boundary edge.
+/// coordinates.  Sides no other polygon has whole are then cut at each
+/// other's ends along their lines, so that a side meeting several sides of
+/// neighbours (a T-junction, as Boolean operations leave them) makes one
+/// edge per run shared by the same polygons.  A run no other side covers is
+/// a boundary edge.  (Sides shared whole are not cut again by a third
+/// polygon's side along them: only a non-manifold mesh has those.)
 template <geometry::number FT> std::vector<scene_edge<FT>> scene_edges(std::vector<polygon<FT>> const& polygons) {
   using namespace detail;
   using key = std::array<FT, 3>;
@@ -182,65 +184,92 @@ template <geometry::number FT> std::vector<scene_edge<FT>> scene_edges(std::vect
   auto id = [&](geometry::e3::point<FT> const& p) {
     return ids.try_emplace({p.x(), p.y(), p.z()}, static_cast<std::uint32_t>(ids.size())).first->second;
   };
-  // The sides on each line, the line keyed by its direction (scaled to a
-  // first non-zero coordinate of 1) and its moment about the origin.
-  struct side {
-    FT t0, t1; // along the direction, t0 < t1
+  // Sides welded by their ends.
+  struct welded {
     geometry::e3::point<FT> const *a, *b;
-    std::uint32_t polygon;
+    std::uint32_t ia, ib;
+    std::vector<std::uint32_t> polygons;
   };
-  std::map<std::pair<key, key>, std::vector<side>> lines;
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::size_t> at;
+  std::vector<welded> sides;
   for (std::uint32_t i = 0; i < polygons.size(); ++i) {
     auto const& v = polygons[i].vertices;
     for (std::size_t k = 0; k < v.size(); ++k) {
       auto const *a = &v[k], *b = &v[(k + 1) % v.size()];
-      if (*a == *b) continue;
-      auto d = line_key(minus(*b, *a));
-      key at{a->x(), a->y(), a->z()};
-      FT ta = dot3x(d, at), tb = dot3x(d, key{b->x(), b->y(), b->z()});
-      if (tb < ta) std::swap(a, b), std::swap(ta, tb);
-      lines[{d, cross3x(at, d)}].push_back({ta, tb, a, b, i});
+      std::uint32_t ia = id(*a), ib = id(*b);
+      if (ia == ib) continue;
+      if (ib < ia) std::swap(a, b), std::swap(ia, ib);
+      auto [it, fresh] = at.try_emplace({ia, ib}, sides.size());
+      if (fresh) sides.push_back({a, b, ia, ib, {i}});
+      else if (sides[it->second].polygons.back() != i) sides[it->second].polygons.push_back(i);
     }
   }
   std::vector<scene_edge<FT>> out;
-  for (auto& [line, sides] : lines) {
+  // The lonely sides on each line, the line keyed by its direction (scaled
+  // to a first non-zero coordinate of 1) and its moment about the origin.
+  struct run {
+    FT t0, t1; // along the direction, t0 < t1
+    geometry::e3::point<FT> const *a, *b;
+    std::uint32_t ia, ib, polygon;
+  };
+  std::map<std::pair<key, key>, std::vector<run>> lines;
+  for (auto const& s : sides) {
+    if (s.polygons.size() != 1) {
+      out.push_back({*s.a, *s.b, s.ia, s.ib, s.polygons});
+      continue;
+    }
+    auto const *a = s.a, *b = s.b;
+    auto ia = s.ia, ib = s.ib;
+    auto d = line_key(minus(*b, *a));
+    key pa{a->x(), a->y(), a->z()};
+    FT ta = dot3x(d, pa), tb = dot3x(d, key{b->x(), b->y(), b->z()});
+    if (tb < ta) std::swap(a, b), std::swap(ia, ib), std::swap(ta, tb);
+    lines[{d, cross3x(pa, d)}].push_back({ta, tb, a, b, ia, ib, s.polygons[0]});
+  }
+  for (auto& [line, runs] : lines) {
+    if (runs.size() == 1) {
+      auto const& r = runs[0];
+      out.push_back({*r.a, *r.b, r.ia, r.ib, {r.polygon}});
+      continue;
+    }
     // Cut at every end: between consecutive ends, the sides that cover the run.
-    std::map<FT, geometry::e3::point<FT> const*> ends;
-    for (auto const& s : sides) ends.emplace(s.t0, s.a), ends.emplace(s.t1, s.b);
+    std::map<FT, std::pair<geometry::e3::point<FT> const*, std::uint32_t>> ends;
+    for (auto const& r : runs) ends.emplace(r.t0, std::pair{r.a, r.ia}), ends.emplace(r.t1, std::pair{r.b, r.ib});
     for (auto it = ends.begin(); std::next(it) != ends.end(); ++it) {
       auto next = std::next(it);
       std::vector<std::uint32_t> on;
-      for (auto const& s : sides)
-        if (s.t0 <= it->first && next->first <= s.t1 && std::find(on.begin(), on.end(), s.polygon) == on.end()) on.push_back(s.polygon);
+      for (auto const& r : runs)
+        if (r.t0 <= it->first && next->first <= r.t1 && std::find(on.begin(), on.end(), r.polygon) == on.end()) on.push_back(r.polygon);
       if (on.empty()) continue;
-      auto const &a = *it->second, &b = *next->second;
-      out.push_back({a, b, id(a), id(b), std::move(on)});
+      out.push_back({*it->second.first, *next->second.first, it->second.second, next->second.second, std::move(on)});
     }
   }
   return out;
 }
 
-/// How edge `e` is drawn from `eye` (see `edge_kind`).
+namespace detail {
+
+/// `kind_of`, given the edge's ends from the eye, `A` and `B`, their cross
+/// product `n`, and the polygons' planes.
 template <geometry::number FT>
-edge_kind kind_of(scene_edge<FT> const& e, std::vector<polygon<FT>> const& polygons, geometry::e3::point<FT> const& eye, line_options const& o) {
-  using namespace detail;
+edge_kind kind_from(scene_edge<FT> const& e, std::vector<polygon<FT>> const& polygons, geometry::e3::point<FT> const& eye, line_options const& o,
+                    std::vector<eye_plane<FT>> const& planes, v3<FT> const& A, v3<FT> const& B, v3<FT> const& n) {
   if (e.polygons.size() == 1) return edge_kind::boundary;
   if (e.polygons.size() > 2) return edge_kind::crease;
-  // A vertex of each polygon off the edge's line (a convex polygon may have
-  // vertices in the middle of its sides).
-  auto E0 = minus(e.b, e.a);
+  // A vertex of each polygon off the edge's line: where the edge is a whole
+  // side, any other vertex (the polygon is strictly convex); where it is
+  // part of a side (a T-junction), one not on its line.
   auto off = [&](polygon<FT> const& p) -> geometry::e3::point<FT> const& {
+    int ends = 0;
+    for (auto const& v : p.vertices) ends += (v == e.a) + (v == e.b);
     for (auto const& v : p.vertices)
-      if (!is_zero3(cross3x(E0, minus(v, e.a)))) return v;
+      if (!(v == e.a) && !(v == e.b) && (ends == 2 || !is_zero3(cross3x(minus(e.b, e.a), minus(v, e.a))))) return v;
     return p.vertices[0];
   };
   auto const &p = polygons[e.polygons[0]], &q = polygons[e.polygons[1]];
-  auto A = minus(e.a, eye), B = minus(e.b, eye);
-  auto n = cross3x(A, B); // the plane through the eye and the edge
   auto cp = minus(off(p), eye), cq = minus(off(q), eye);
   int sp = sgn(dot3x(n, cp)), sq = sgn(dot3x(n, cq));
-  auto pp = plane_of(p, eye);
-  bool coplanar = sgn(pp.at(cq)) == 0;
+  bool coplanar = sgn(planes[e.polygons[0]].at(cq)) == 0;
   // Both polygons on one side of the edge in the view: the surface folds there.
   if (sp == 0 || sq == 0 || sp == sq) {
     // A flat pair seen exactly edge-on is still a diagonal.
@@ -255,6 +284,21 @@ edge_kind kind_of(scene_edge<FT> const& e, std::vector<polygon<FT>> const& polyg
   auto d = [](v3<FT> const& x) { return v3<double>{to_double(x[0]), to_double(x[1]), to_double(x[2])}; };
   double b = bend(d(minus(B, A)), d(minus(cp, A)), d(minus(cq, A)));
   return b > o.crease * std::numbers::pi / 180 ? edge_kind::crease : edge_kind::smooth;
+}
+
+} // namespace detail
+
+/// How edge `e` is drawn from `eye` (see `edge_kind`).
+template <geometry::number FT>
+edge_kind kind_of(scene_edge<FT> const& e, std::vector<polygon<FT>> const& polygons, geometry::e3::point<FT> const& eye, line_options const& o) {
+  using namespace detail;
+  std::vector<eye_plane<FT>> planes;
+  for (auto i : e.polygons) {
+    if (planes.size() <= i) planes.resize(i + 1);
+    planes[i] = plane_of(polygons[i], eye);
+  }
+  auto A = minus(e.a, eye), B = minus(e.b, eye);
+  return kind_from(e, polygons, eye, o, planes, A, B, cross3x(A, B));
 }
 
 /// The visible and hidden lines of `polygons` seen from `eye`, from their map
@@ -293,13 +337,22 @@ line_set<FT> hidden_lines(visibility_map<FT> const& vm, geometry::e3::point<FT> 
     std::int64_t side[2];
   };
   std::vector<run> runs;
+  // A side polygon's plane along an edge: its value fa + t·df at the point
+  // of parameter t, zero at t = zero (when df ≠ 0); kept per polygon for the
+  // edge's runs.
+  struct along {
+    std::int64_t q;
+    FT fa, df, zero;
+    int sign_df, sign_eye;
+  };
+  std::vector<along> sides;
   out.kinds.reserve(out.edges.size());
   for (std::uint32_t ei = 0; ei < out.edges.size(); ++ei) {
     auto const& e = out.edges[ei];
-    auto kind = kind_of(e, polygons, eye, o);
-    out.kinds.push_back(kind);
     auto A = minus(e.a, eye), B = minus(e.b, eye);
     auto n = cross3x(A, B);
+    auto kind = kind_from(e, polygons, eye, o, planes, A, B, n);
+    out.kinds.push_back(kind);
     if (is_zero3(n)) {
       ++out.stats.edges_through_eye;
       continue;
@@ -354,13 +407,32 @@ line_set<FT> hidden_lines(visibility_map<FT> const& vm, geometry::e3::point<FT> 
       }
       return lo < hi;
     };
-    auto hidden_at = [&](run const& r, FT const& t) {
-      auto x = x_at(t);
-      for (auto q : r.side)
-        if (q >= 0 && sgn(planes[q].at(x)) == -sgn(planes[q].d)) return true;
-      if (flat)
+    sides.clear();
+    auto along_of = [&](std::int64_t q) -> along const& {
+      for (auto const& s : sides)
+        if (s.q == q) return s;
+      FT fa = planes[q].at(A), df = planes[q].at(B) - fa;
+      int sd = sgn(df);
+      FT zero = sd == 0 ? FT(0) : FT(-fa / df);
+      sides.push_back({q, std::move(fa), std::move(df), std::move(zero), sd, sgn(planes[q].d)});
+      return sides.back();
+    };
+    // Hidden on the open interval (t0, t1), which no cut is inside: a side's
+    // plane separates the eye from the points there (its sign there is read
+    // off where the interval lies against the plane's zero), or an edge-on
+    // polygon blocks the ray to its midpoint.
+    auto hidden_on = [&](run const& r, FT const& t0, FT const& t1) {
+      for (auto q : r.side) {
+        if (q < 0) continue;
+        auto const& s = along_of(q);
+        int sign = s.sign_df == 0 ? sgn(s.fa) : (t0 < s.zero ? -s.sign_df : s.sign_df);
+        if (sign == -s.sign_eye) return true;
+      }
+      if (flat) {
+        auto x = x_at(FT((t0 + t1) / 2));
         for (auto g : *flat)
           if (!incident(g) && blocks(g, x)) return true;
+      }
       return false;
     };
     std::vector<FT> cuts;
@@ -371,10 +443,8 @@ line_set<FT> hidden_lines(visibility_map<FT> const& vm, geometry::e3::point<FT> 
       cuts.push_back(r.t0);
       for (auto q : r.side) {
         if (q < 0) continue;
-        FT fa = planes[q].at(A), fb = planes[q].at(B);
-        if (sgn(fb - fa) == 0) continue;
-        FT t = -fa / (fb - fa);
-        if (r.t0 < t && t < r.t1) cuts.push_back(t);
+        auto const& s = along_of(q);
+        if (s.sign_df != 0 && r.t0 < s.zero && s.zero < r.t1) cuts.push_back(s.zero);
       }
       if (flat)
         for (auto g : *flat)
@@ -392,7 +462,7 @@ line_set<FT> hidden_lines(visibility_map<FT> const& vm, geometry::e3::point<FT> 
       for (auto q : r.side)
         if (q < 0 || !incident(q)) outline = true;
       for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
-        bool hidden = hidden_at(r, FT((cuts[k] + cuts[k + 1]) / 2));
+        bool hidden = hidden_on(r, cuts[k], cuts[k + 1]);
         line_class c;
         if (hidden) {
           if (kind == edge_kind::smooth) continue;
