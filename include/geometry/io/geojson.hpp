@@ -26,15 +26,23 @@ struct json_value {
   enum class kind { null, boolean, number, string, array, object } type = kind::null;
   std::string text; ///< a number's text, a string's value, `true`/`false`
   std::vector<json_value> items;
-  std::vector<std::pair<std::string, json_value>> members;
+  struct member; // a key and its value (a pair would need json_value complete here)
+  std::vector<member> members;
   std::size_t line = 0;
 
-  json_value const* find(std::string_view key) const {
-    for (auto const& [k, v] : members)
-      if (k == key) return &v;
-    return nullptr;
-  }
+  json_value const* find(std::string_view key) const;
 };
+
+struct json_value::member {
+  std::string key;
+  json_value value;
+};
+
+inline json_value const* json_value::find(std::string_view key) const {
+  for (auto const& [k, v] : members)
+    if (k == key) return &v;
+  return nullptr;
+}
 
 class json_parser {
 public:
@@ -77,7 +85,7 @@ private:
         if (peek() != '"') fail("expected a member name in quotes");
         std::string key = string_body();
         expect(':');
-        v.members.emplace_back(std::move(key), value(depth + 1));
+        v.members.push_back({std::move(key), value(depth + 1)});
         if (peek() == ',') {
           ++i_;
           continue;
