@@ -412,6 +412,12 @@ expect_error "render: --line-width without --style lines" "--line-width is for -
 expect_error "render: an unknown --hidden" "--hidden" "$genbsp" render "$work/cube.off" --eye 3,4,5 --style lines --hidden dotted -o "$work/x.svg"
 check "render: no file after an error" test ! -e "$work/x.svg"
 
+# --version: the version and the source revision; the same string in JSON summaries.
+"$genbsp" --version >"$work/version"
+check "--version exits 0 and names genbsp" grep -qE '^genbsp [0-9]+\.[0-9]+\.[0-9]+ \(.+\)$' "$work/version"
+"$genbsp" stats "$work/scene.off" --eye 0,0,0 >"$work/summary"
+check "stats: the version in the summary" test "genbsp $(summary_field genbsp <"$work/summary")" = "$(cat "$work/version")"
+
 for sub in map locate stats scene render view shadow bool csg visibility2d; do
   "$genbsp" "$sub" --help >"$work/help" 2>&1
   check "$sub --help exits 0" test $? -eq 0

@@ -180,6 +180,7 @@ void bool_job::run() const {
   }
   write_file(output, text);
   summary["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  summary["genbsp"] = version();
   if (output == "-")
     std::cerr << summary.dump() << "\n";
   else
@@ -231,7 +232,8 @@ void csg_job::run() const {
   auto volume = boolean::volume(m);
   auto edges = boolean::inspect_edges(m);
   write_file(output, ext == ".off" ? boolean::to_off(m) : ext == ".obj" ? boolean::to_obj(m) : boolean::to_stl(m));
-  json summary = {{"volume", volume.convert_to<double>()},
+  json summary = {{"genbsp", version()},
+                  {"volume", volume.convert_to<double>()},
                   {"volume_exact", exact_text(volume)},
                   {"faces", m.faces.size()},
                   {"vertices", m.vertices.size()},

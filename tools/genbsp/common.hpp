@@ -4,6 +4,8 @@
 
 #include <geometry/number.hpp>
 
+#include "version.hpp"
+
 #include <unistd.h>
 
 #include <cctype>
@@ -19,6 +21,10 @@
 namespace genbsp_tool {
 
 using geometry::rational;
+
+/// What ran: the version and the source revision (git describe), as
+/// `genbsp --version` prints it and every JSON summary carries it.
+inline std::string version() { return GENBSP_VERSION " (" GENBSP_REVISION ")"; }
 
 /// Bad input: reported as one line, exit status 2.
 struct usage_error : std::runtime_error {

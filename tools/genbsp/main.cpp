@@ -286,7 +286,8 @@ json size_json(svm::map_size const& s) { return {{"vertices", s.vertices}, {"edg
 
 template <class FT> json stats_json(svm::visibility_map<FT> const& vm, loaded const& l) {
   auto const& st = vm.stats;
-  return {{"input_faces", l.input_faces},
+  return {{"genbsp", version()},
+          {"input_faces", l.input_faces},
           {"polygons", st.input_polygons},
           {"degenerate_faces", l.prepared.degenerate_faces},
           {"triangulated_faces", l.prepared.triangulated_faces},
@@ -644,6 +645,7 @@ std::string shadow_output(map_job const& job, std::vector<std::string> const& li
 int run(int argc, char** argv) {
   CLI::App app{"genbsp: binary space partitioning for exact geometric computing"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", "genbsp " + version(), "print the version and the source revision, and exit");
 
   map_job mj;
   std::string map_out;
@@ -761,6 +763,8 @@ int run(int argc, char** argv) {
   } catch (CLI::CallForHelp const& e) {
     return app.exit(e);
   } catch (CLI::CallForAllHelp const& e) {
+    return app.exit(e);
+  } catch (CLI::CallForVersion const& e) {
     return app.exit(e);
   } catch (CLI::ParseError const& e) {
     std::string what = e.what();
@@ -1089,7 +1093,7 @@ int run(int argc, char** argv) {
     if (ro.style == svm::render::style::lines) {
       json layers = json::array();
       for (auto const& [d, path] : layer_files) layers.push_back(path);
-      json out{{"views", line_summaries}};
+      json out{{"genbsp", version()}, {"views", line_summaries}};
       if (split_layers) out["layer_files"] = layers;
       std::cout << out.dump() << "\n";
     }

@@ -322,6 +322,7 @@ void visibility2d_job::run() const {
                {"query_seconds", query},
                {"seconds", seconds}};
   }
+  summary["genbsp"] = version();
   (output == "-" ? std::cerr : std::cout) << summary.dump() << "\n";
 }
 
