@@ -11,16 +11,18 @@
 /// pieces are cut only by the locator's circles (input-derived), so no
 /// constructed point feeds a construction.  A point x of a piece is hidden
 /// when a polygon seen on either side lies strictly between O and x: the
-/// sign of that polygon's plane at x, linear along the edge, is evaluated at
-/// the piece's ends (intersections of the edge's circle with its bounds,
-/// degree bounded) and, where it changes inside, at the crossing.  Polygons
-/// seen edge-on (the eye in their plane) are not in the map; an edge in such
-/// a plane is tested against them directly.
+/// sign of that polygon's plane at x is linear along the edge, so pieces are
+/// cut where it is zero, and a piece's sign is read off which side of that
+/// zero it lies on (its ends are parameters read off its bounds' circles:
+/// degree bounded).  Polygons seen edge-on (the eye in their plane) are not
+/// in the map; an edge in such a plane is cut at their vertices' directions
+/// and tested against them directly, at each piece's midpoint.
 #pragma once
 
 #include "build.hpp"
 
 #include <bsp/point_set.hpp>
+#include <geometry/linear.hpp>
 
 #include <algorithm>
 #include <array>
@@ -117,10 +119,6 @@ template <class FT> v3<FT> minus(geometry::e3::point<FT> const& p, geometry::e3:
   return {p.x() - q.x(), p.y() - q.y(), p.z() - q.z()};
 }
 template <class FT> v3<FT> minus(v3<FT> const& p, v3<FT> const& q) { return {p[0] - q[0], p[1] - q[1], p[2] - q[2]}; }
-template <class FT> FT dot3x(v3<FT> const& a, v3<FT> const& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-template <class FT> v3<FT> cross3x(v3<FT> const& a, v3<FT> const& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
 template <class FT> int sgn(FT const& x) { return static_cast<int>(geometry::sign_of(x)); }
 template <class FT> bool is_zero3(v3<FT> const& v) { return sgn(v[0]) == 0 && sgn(v[1]) == 0 && sgn(v[2]) == 0; }
 
@@ -129,7 +127,7 @@ template <class FT> bool is_zero3(v3<FT> const& v) { return sgn(v[0]) == 0 && sg
 template <class FT> struct eye_plane {
   v3<FT> n;
   FT d; ///< the plane's value at the eye
-  FT at(v3<FT> const& x) const { return dot3x(n, x) + d; }
+  FT at(v3<FT> const& x) const { return geometry::dot(n, x) + d; }
 };
 
 /// (From the first vertex and two others not on a line with it: a polygon
@@ -137,8 +135,8 @@ template <class FT> struct eye_plane {
 template <class FT> eye_plane<FT> plane_of(polygon<FT> const& p, geometry::e3::point<FT> const& eye) {
   auto a = minus(p.vertices[0], eye), b = minus(p.vertices[1], eye);
   v3<FT> n{};
-  for (std::size_t k = 2; k < p.vertices.size() && is_zero3(n); ++k) n = cross3x(minus(b, a), minus(minus(p.vertices[k], eye), a));
-  return {n, -dot3x(n, a)};
+  for (std::size_t k = 2; k < p.vertices.size() && is_zero3(n); ++k) n = geometry::cross(minus(b, a), minus(minus(p.vertices[k], eye), a));
+  return {n, -geometry::dot(n, a)};
 }
 
 /// The line through the eye's plane `n` up to scale and orientation, as a
@@ -155,11 +153,11 @@ template <class FT> v3<FT> line_key(v3<FT> n) {
 /// folded back), in doubles (it only meets the crease threshold).
 inline double bend(v3<double> const& e, v3<double> const& u, v3<double> const& w) {
   auto perp = [&](v3<double> x) {
-    double k = dot3x(x, e) / dot3x(e, e);
+    double k = geometry::dot(x, e) / geometry::dot(e, e);
     return v3<double>{x[0] - k * e[0], x[1] - k * e[1], x[2] - k * e[2]};
   };
   auto pu = perp(u), pw = perp(w);
-  double c = dot3x(pu, pw) / std::sqrt(dot3x(pu, pu) * dot3x(pw, pw));
+  double c = geometry::dot(pu, pw) / std::sqrt(geometry::dot(pu, pu) * geometry::dot(pw, pw));
   return std::numbers::pi - std::acos(std::clamp(c, -1.0, 1.0));
 }
 
@@ -222,9 +220,9 @@ template <geometry::number FT> std::vector<scene_edge<FT>> scene_edges(std::vect
     auto ia = s.ia, ib = s.ib;
     auto d = line_key(minus(*b, *a));
     key pa{a->x(), a->y(), a->z()};
-    FT ta = dot3x(d, pa), tb = dot3x(d, key{b->x(), b->y(), b->z()});
+    FT ta = geometry::dot(d, pa), tb = geometry::dot(d, key{b->x(), b->y(), b->z()});
     if (tb < ta) std::swap(a, b), std::swap(ia, ib), std::swap(ta, tb);
-    lines[{d, cross3x(pa, d)}].push_back({ta, tb, a, b, ia, ib, s.polygons[0]});
+    lines[{d, geometry::cross(pa, d)}].push_back({ta, tb, a, b, ia, ib, s.polygons[0]});
   }
   for (auto& [line, runs] : lines) {
     if (runs.size() == 1) {
@@ -263,19 +261,19 @@ edge_kind kind_from(scene_edge<FT> const& e, std::vector<polygon<FT>> const& pol
     int ends = 0;
     for (auto const& v : p.vertices) ends += (v == e.a) + (v == e.b);
     for (auto const& v : p.vertices)
-      if (!(v == e.a) && !(v == e.b) && (ends == 2 || !is_zero3(cross3x(minus(e.b, e.a), minus(v, e.a))))) return v;
+      if (!(v == e.a) && !(v == e.b) && (ends == 2 || !is_zero3(geometry::cross(minus(e.b, e.a), minus(v, e.a))))) return v;
     return p.vertices[0];
   };
   auto const &p = polygons[e.polygons[0]], &q = polygons[e.polygons[1]];
   auto cp = minus(off(p), eye), cq = minus(off(q), eye);
-  int sp = sgn(dot3x(n, cp)), sq = sgn(dot3x(n, cq));
+  int sp = sgn(geometry::dot(n, cp)), sq = sgn(geometry::dot(n, cq));
   bool coplanar = sgn(planes[e.polygons[0]].at(cq)) == 0;
   // Both polygons on one side of the edge in the view: the surface folds there.
   if (sp == 0 || sq == 0 || sp == sq) {
     // A flat pair seen exactly edge-on is still a diagonal.
     if (coplanar && sp == 0 && sq == 0) {
       auto E = minus(B, A);
-      if (sgn(dot3x(cross3x(E, minus(cp, A)), cross3x(E, minus(cq, A)))) < 0) return edge_kind::never;
+      if (sgn(geometry::dot(geometry::cross(E, minus(cp, A)), geometry::cross(E, minus(cq, A)))) < 0) return edge_kind::never;
     }
     return edge_kind::silhouette;
   }
@@ -298,7 +296,7 @@ edge_kind kind_of(scene_edge<FT> const& e, std::vector<polygon<FT>> const& polyg
     planes[i] = plane_of(polygons[i], eye);
   }
   auto A = minus(e.a, eye), B = minus(e.b, eye);
-  return kind_from(e, polygons, eye, o, planes, A, B, cross3x(A, B));
+  return kind_from(e, polygons, eye, o, planes, A, B, geometry::cross(A, B));
 }
 
 /// The visible and hidden lines of `polygons` seen from `eye`, from their map
@@ -350,7 +348,7 @@ line_set<FT> hidden_lines(visibility_map<FT> const& vm, geometry::e3::point<FT> 
   for (std::uint32_t ei = 0; ei < out.edges.size(); ++ei) {
     auto const& e = out.edges[ei];
     auto A = minus(e.a, eye), B = minus(e.b, eye);
-    auto n = cross3x(A, B);
+    auto n = geometry::cross(A, B);
     auto kind = kind_from(e, polygons, eye, o, planes, A, B, n);
     out.kinds.push_back(kind);
     if (is_zero3(n)) {
@@ -360,7 +358,7 @@ line_set<FT> hidden_lines(visibility_map<FT> const& vm, geometry::e3::point<FT> 
     if (kind == edge_kind::never) continue;
     auto BA = minus(B, A);
     // The parameter along the edge where a circle through the eye meets it.
-    auto t_at = [&](v3<FT> const& c) { return FT(-dot3x(c, A) / dot3x(c, BA)); };
+    auto t_at = [&](v3<FT> const& c) { return FT(-geometry::dot(c, A) / geometry::dot(c, BA)); };
 
     // Pieces with the faces on their two sides.
     runs.clear();
@@ -395,8 +393,8 @@ line_set<FT> hidden_lines(visibility_map<FT> const& vm, geometry::e3::point<FT> 
       for (std::size_t k = 0; k < v.size(); ++k) {
         auto gk = minus(v[k], eye), gl = minus(v[(k + 1) % v.size()], eye);
         // Inside edge k where det(N, gl − gk, s·x − gk) ≥ 0: α + s·β.
-        auto w = cross3x(N, minus(gl, gk));
-        FT alpha = -dot3x(w, gk), beta = dot3x(w, x);
+        auto w = geometry::cross(N, minus(gl, gk));
+        FT alpha = -geometry::dot(w, gk), beta = geometry::dot(w, x);
         if (sgn(beta) == 0) {
           if (sgn(alpha) < 0) return false;
           continue;
@@ -450,8 +448,8 @@ line_set<FT> hidden_lines(visibility_map<FT> const& vm, geometry::e3::point<FT> 
         for (auto g : *flat)
           for (auto const& vtx : polygons[g].vertices) {
             auto gv = minus(vtx, eye);
-            auto c = cross3x(n, gv); // a circle through the vertex's direction
-            if (sgn(dot3x(c, BA)) == 0) continue;
+            auto c = geometry::cross(n, gv); // a circle through the vertex's direction
+            if (sgn(geometry::dot(c, BA)) == 0) continue;
             FT t = t_at(c);
             if (r.t0 < t && t < r.t1) cuts.push_back(t);
           }
@@ -488,13 +486,13 @@ line_set<FT> hidden_lines(visibility_map<FT> const& vm, geometry::e3::point<FT> 
   // whole: a run of scene edges cut at T-junctions may hold one map edge).
   auto on_side = [&](index he, geometry::e3::point<FT> const& a, geometry::e3::point<FT> const& b) {
     auto A = minus(a, eye), B = minus(b, eye);
-    auto n = cross3x(A, B);
+    auto n = geometry::cross(A, B);
     if (is_zero3(n)) return false;
     auto const c = m.circles()[m.half_edges()[he].circle].n.exact();
-    if (!is_zero3(cross3x(c, n))) return false;
+    if (!is_zero3(geometry::cross(c, n))) return false;
     for (index v : {m.origin(he), m.target(he)}) {
       auto const d = m.point(v).exact();
-      if (sgn(dot3x(cross3x(A, d), n)) < 0 || sgn(dot3x(cross3x(d, B), n)) < 0) return false;
+      if (sgn(geometry::dot(geometry::cross(A, d), n)) < 0 || sgn(geometry::dot(geometry::cross(d, B), n)) < 0) return false;
     }
     return true;
   };

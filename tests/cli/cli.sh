@@ -418,7 +418,9 @@ check "--version exits 0 and names genbsp" grep -qE '^genbsp [0-9]+\.[0-9]+\.[0-
 "$genbsp" stats "$work/scene.off" --eye 0,0,0 >"$work/summary"
 check "stats: the version in the summary" test "genbsp $(summary_field genbsp <"$work/summary")" = "$(cat "$work/version")"
 
-# Determinism: the same input gives byte-identical files, run after run.
+# Determinism: the same input gives byte-identical files, run after run (a
+# PDF's creation date from SOURCE_DATE_EPOCH, else the time of writing).
+export SOURCE_DATE_EPOCH=1764720000
 for k in 1 2; do
   "$genbsp" map "$work/scene.off" --eye 0,0,1/3 -o "$work/det-$k.json" >/dev/null
   "$genbsp" render "$work/cube.off" --eye 3,4,5 --style lines --hidden dashed -o "$work/det-$k.svg" >/dev/null
@@ -430,6 +432,8 @@ for ext in svg pdf geojson off; do
   check "determinism: $ext output identical in two runs" cmp -s "$work/det-1.$ext" "$work/det-2.$ext"
 done
 # A map file's statistics hold timings; all else is identical.
+unset SOURCE_DATE_EPOCH
+check "determinism: the PDF's creation date from SOURCE_DATE_EPOCH" grep -qa 'CreationDate (20251203000000Z)' "$work/det-1.pdf"
 check "determinism: map files identical but for their timings" python3 -c 'import json, sys
 a, b = (json.load(open(f)) for f in sys.argv[1:])
 a.pop("stats"), b.pop("stats")

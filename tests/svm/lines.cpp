@@ -469,6 +469,8 @@ TEST_CASE("hidden-line drawings: layers, dashes, pen travel", "[lines][render]")
   // The silhouette joined into one closed hexagon; creases meet at corners.
   CHECK(segments == std::map<std::string, std::size_t>{{"hidden-crease", 3}, {"visible-crease", 3}, {"visible-silhouette", 6}});
   CHECK(s.visible[static_cast<std::size_t>(svm::line_class::silhouette)].polylines == 1);
+  CHECK(d.edges == 9); // the visible ones
+  for (auto const& l : d.layers) CHECK(l.edges == (l.name == "visible-silhouette" ? 6u : 3u));
   CHECK(s.travel_after <= s.travel_before);
   for (auto const& l : d.layers) CHECK(l.dash.empty() == l.name.starts_with("visible"));
   auto svg = svm::render::to_svg(d);

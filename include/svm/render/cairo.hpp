@@ -12,6 +12,8 @@
 #include <cairo.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <ctime>
 #include <stdexcept>
 #include <string>
 
@@ -87,12 +89,25 @@ inline void draw_cairo(cairo_t* cr, drawing const& d) {
 /// The output formats of cairo.
 enum class cairo_format { pdf, eps, png };
 
-/// Writes `d` to `path` as PDF, EPS or PNG.  Throws `std::runtime_error` when
-/// cairo reports an error.
+/// Writes `d` to `path` as PDF, EPS or PNG.  A PDF's creation date is the
+/// time of writing, or `SOURCE_DATE_EPOCH` (seconds since 1970, UTC) when
+/// that is set, so that a file can be made byte for byte again.  Throws
+/// `std::runtime_error` when cairo reports an error.
 inline void write_cairo(drawing const& d, std::string const& path, cairo_format f) {
   cairo_surface_t* s = nullptr;
   switch (f) {
-  case cairo_format::pdf: s = cairo_pdf_surface_create(path.c_str(), d.width, d.height); break;
+  case cairo_format::pdf:
+    s = cairo_pdf_surface_create(path.c_str(), d.width, d.height);
+    if (char const* epoch = std::getenv("SOURCE_DATE_EPOCH")) {
+      char* end = nullptr;
+      long long seconds = std::strtoll(epoch, &end, 10);
+      std::time_t t = static_cast<std::time_t>(seconds);
+      std::tm utc{};
+      char date[32];
+      if (end != epoch && *end == '\0' && gmtime_r(&t, &utc) && std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", &utc))
+        cairo_pdf_surface_set_metadata(s, CAIRO_PDF_METADATA_CREATE_DATE, date);
+    }
+    break;
   case cairo_format::eps:
     s = cairo_ps_surface_create(path.c_str(), d.width, d.height);
     cairo_ps_surface_set_eps(s, 1);

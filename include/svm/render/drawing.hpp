@@ -74,6 +74,7 @@ struct line_layer {
   bool shown = true; ///< false: written, but hidden in the document (SVG display:none)
   double width = 1;
   std::vector<double> dash; ///< on, off, … lengths; empty: solid
+  std::size_t edges = 0;    ///< edges drawn (pieces of one great circle joined end to end count once)
   std::vector<std::vector<pixel>> lines;
 };
 

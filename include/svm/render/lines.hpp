@@ -96,7 +96,7 @@ drawing draw_lines(line_set<FT> const& ls, visibility_map<FT> const& vm, geometr
       return unique++;
     };
     auto c = static_cast<std::size_t>(p.cls);
-    pieces[p.hidden][c].push_back({key(p.t0), key(p.t1), arc_image(pr, at(p.t0), at(p.t1), o.tolerance), unit_of(svm::detail::cross3x(A, B))});
+    pieces[p.hidden][c].push_back({key(p.t0), key(p.t1), arc_image(pr, at(p.t0), at(p.t1), o.tolerance), unit_of(geometry::cross(A, B))});
     edge_seen[p.hidden][c][p.edge] = 1;
   }
   auto const& m = vm.map;
@@ -138,7 +138,8 @@ drawing draw_lines(line_set<FT> const& ls, visibility_map<FT> const& vm, geometr
       std::vector<std::vector<pixel>> alone;
       for (auto const& p : list) alone.push_back(p.pts);
       s.travel_before += pen_travel(alone);
-      assemble(list, perspective, layer.lines);
+      layer.edges = assemble(list, perspective, layer.lines);
+      if (!hidden) out.edges += layer.edges;
       s.travel_after += pen_travel(layer.lines);
       auto& cnt = hidden ? s.hidden[ci] : s.visible[ci];
       cnt.polylines = layer.lines.size();
@@ -146,8 +147,6 @@ drawing draw_lines(line_set<FT> const& ls, visibility_map<FT> const& vm, geometr
       cnt.edges = map_count[ci] && !hidden ? map_count[ci] : static_cast<std::size_t>(std::count(edge_seen[hidden][ci].begin(), edge_seen[hidden][ci].end(), 1));
       out.layers.push_back(std::move(layer));
     }
-  for (auto const& l : out.layers)
-    if (l.name.starts_with("visible-")) out.edges += l.lines.size();
   if (summary) *summary = s;
   return out;
 }
@@ -157,7 +156,7 @@ inline drawing single_layer(drawing const& d, std::size_t k) {
   drawing out = d;
   out.layers = {d.layers.at(k)};
   out.layers[0].shown = true;
-  out.edges = out.layers[0].lines.size();
+  out.edges = out.layers[0].edges;
   return out;
 }
 
