@@ -439,7 +439,97 @@ a, b = (json.load(open(f)) for f in sys.argv[1:])
 a.pop("stats"), b.pop("stats")
 assert a == b' "$work/det-1.json" "$work/det-2.json"
 
-for sub in map locate stats scene render view shadow bool csg visibility2d; do
+
+# batch: one scene, many jobs; each job's files and numbers as the single commands give them.
+mkdir -p "$work/batch"
+cat >"$work/batch/jobs.json" <<'JSON'
+{"scene": "../scene.off",
+ "jobs": [
+  {"id": "centre", "eye": [0, 0, 0], "stats": true, "map": "m0.json"},
+  {"eye": ["1/3", 0.1, "-0.5"], "render": [{"output": "r1.svg", "size": [200, 150], "fov": 70}, {"output": "r1-lines.svg", "style": "lines", "hidden": "dashed"}]},
+  {"id": 7, "eye": [0.2, -0.3, 0.5], "stats": true, "cull_backfaces": true},
+  {"view_dir": [0, 0, 1], "map": "parallel.json"}
+ ]}
+JSON
+"$genbsp" batch "$work/batch/jobs.json" --jobs 2 >"$work/batch/out1" 2>"$work/batch/err1"
+check "batch: exit status 0" test $? -eq 0
+check "batch: a line per job and a summary" test "$(wc -l <"$work/batch/out1")" -eq 5
+"$genbsp" map "$work/scene.off" --eye 0,0,0 -o "$work/batch/m0-single.json"
+"$genbsp" stats "$work/scene.off" --eye 0.2,-0.3,0.5 --cull-backfaces >"$work/batch/s2-single.json"
+"$genbsp" render "$work/scene.off" --eye 1/3,0.1,-0.5 --size 200x150 --fov 70 -o "$work/batch/r1-single.svg"
+"$genbsp" render "$work/scene.off" --eye 1/3,0.1,-0.5 --style lines --hidden dashed -o "$work/batch/r1-lines-single.svg" >/dev/null
+"$genbsp" map "$work/scene.off" --view-dir 0,0,1 -o "$work/batch/parallel-single.json"
+check "batch: the image is the single command's" cmp -s "$work/batch/r1.svg" "$work/batch/r1-single.svg"
+check "batch: the line drawing is the single command's" cmp -s "$work/batch/r1-lines.svg" "$work/batch/r1-lines-single.svg"
+check "batch: maps and stats are the single commands'" python3 - "$work/batch" <<'PY'
+import json, sys, os
+d = sys.argv[1]
+lines = [json.loads(l) for l in open(os.path.join(d, "out1"))]
+jobs = {l["job"]: l for l in lines if "job" in l}
+summary = lines[-1]["summary"]
+assert summary["jobs"] == 4 and summary["ok"] == 4 and summary["failed"] == 0 and summary["workers"] == 2, summary
+assert all(j["ok"] for j in jobs.values())
+assert jobs[0]["id"] == "centre" and jobs[2]["id"] == 7 and "id" not in jobs[1]
+def strip(m):
+    m = dict(m); m.pop("stats"); return m
+for a, b in (("m0.json", "m0-single.json"), ("parallel.json", "parallel-single.json")):
+    assert strip(json.load(open(os.path.join(d, a)))) == strip(json.load(open(os.path.join(d, b)))), a
+single = json.load(open(os.path.join(d, "s2-single.json")))
+for key in ("map", "map_unsimplified", "discarded_backfacing", "fragments", "visible_pieces"):
+    assert jobs[2]["stats"][key] == single[key], key
+assert jobs[0]["stats"]["map"] == json.load(open(os.path.join(d, "m0-single.json")))["stats"]["map"]
+assert jobs[0]["outputs"] == [os.path.join(d, "m0.json")]
+assert jobs[1]["render"][0]["views"][0]["output"] == os.path.join(d, "r1-lines.svg") and jobs[1]["render"][0]["views"][0]["visible"]["silhouette"]["edges"] > 0
+PY
+"$genbsp" batch "$work/batch/jobs.json" --jobs 1 >"$work/batch/out2"
+check "batch: one thread gives the same results as two" python3 - "$work/batch/out1" "$work/batch/out2" <<'PY'
+import json, sys
+def results(f):
+    out = {}
+    for l in open(f):
+        j = json.loads(l)
+        if "job" in j:
+            j.pop("seconds")
+            if "stats" in j:
+                j["stats"] = {k: v for k, v in j["stats"].items() if "seconds" not in k and k != "peak_bytes"}
+            for r in j.get("render", []):
+                for v in r.get("views", []): v.pop("seconds")
+            out[j["job"]] = j
+    return out
+assert results(sys.argv[1]) == results(sys.argv[2])
+PY
+"$genbsp" batch "$work/batch/jobs.json" --shard 0/3 >"$work/batch/shard0"
+"$genbsp" batch "$work/batch/jobs.json" --shard 1/3 >"$work/batch/shard1"
+"$genbsp" batch "$work/batch/jobs.json" --shard 2/3 >"$work/batch/shard2"
+check "batch: three shards run every job once" test "$(cat "$work"/batch/shard? | grep -o '"job":[0-9]*' | sort | tr '\n' ' ')" = '"job":0 "job":1 "job":2 "job":3 '
+check "batch: a shard's summary names it" grep -q '"shard":"1/3"' "$work/batch/shard1"
+# A job that fails while running: its status 2, its files gone, the other jobs done.
+cat >"$work/batch/fails.json" <<JSON
+{"scene": "$work/scene.off", "jobs": [
+  {"eye": [0, 0, 0], "map": "kept.json"},
+  {"eye": [0, 0, 0], "map": "dropped.json", "render": {"output": "dropped.txt"}}]}
+JSON
+"$genbsp" batch "$work/batch/fails.json" >"$work/batch/out3" 2>/dev/null
+check "batch: a failed job makes exit status 2" test $? -eq 2
+check "batch: the failed job says why" grep -q '"job":1,"ok":false,"error":"[^"]*dropped.txt: unknown output format' "$work/batch/out3"
+check "batch: the other job's file is written" test -s "$work/batch/kept.json"
+check "batch: the failed job's files are removed" test ! -e "$work/batch/dropped.json" -a ! -e "$work/batch/dropped.txt"
+echo '{"scene": "../scene.off", "jobs": [{"eye": [0, 0, 0], "rendr": {}}]}' >"$work/batch/typo.json"
+expect_error "batch: unknown key" 'typo.json: job 0: unknown key "rendr"' "$genbsp" batch "$work/batch/typo.json"
+echo '{"scene": "../scene.off", "jobs": [{"eye": [0, 0, 0], "stats": true}, {"eye": [1, 0, 0], "render": {"output": "x.svg", "fov": 400}}]}' >"$work/batch/range.json"
+expect_error "batch: a bad option fails before any job runs" 'range.json: job 1: --fov' "$genbsp" batch "$work/batch/range.json"
+check "batch: nothing printed when the manifest is bad" test ! -s "$work/out"
+echo '{"scene": "../scene.off", "jobs": [{"eye": [0, 0, 0], "map": "same.json"}, {"eye": [1, 0, 0], "map": "./same.json"}]}' >"$work/batch/twice.json"
+expect_error "batch: two jobs writing one file" 'job 1: map .*same.json is written by job 0 too' "$genbsp" batch "$work/batch/twice.json"
+printf '{"scene": "../scene.off",\n "jobs": [\n  {"eye": [0, 0, 0],}]}\n' >"$work/batch/broken.json"
+expect_error "batch: not JSON, with its line" 'broken.json:3: not JSON' "$genbsp" batch "$work/batch/broken.json"
+echo '{"scene": "../scene.off", "jobs": [{"eye": [0, 0], "stats": true}]}' >"$work/batch/eye.json"
+expect_error "batch: an eye of two numbers" 'job 0.eye: expected an array of 3 numbers' "$genbsp" batch "$work/batch/eye.json"
+expect_error "batch: a bad shard" '--shard: expected 0 <= I < N' "$genbsp" batch "$work/batch/jobs.json" --shard 3/3
+echo '{"scene": "nothere.off", "jobs": [{"eye": [0, 0, 0], "stats": true}]}' >"$work/batch/missing.json"
+expect_error "batch: a missing scene" 'nothere.off' "$genbsp" batch "$work/batch/missing.json"
+
+for sub in map locate stats scene render view shadow bool csg visibility2d batch; do
   "$genbsp" "$sub" --help >"$work/help" 2>&1
   check "$sub --help exits 0" test $? -eq 0
   check "$sub --help says what it does" grep -q "Usage" "$work/help"

@@ -184,7 +184,7 @@ void bool_job::run() const {
   if (output == "-")
     std::cerr << summary.dump() << "\n";
   else
-    std::cout << summary.dump() << "\n";
+    out() << summary.dump() << "\n";
 }
 
 namespace {
@@ -240,7 +240,7 @@ void csg_job::run() const {
                   {"closed", edges.unmatched == 0 && edges.non_manifold == 0},
                   {"non_manifold_edges", edges.non_manifold},
                   {"seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()}};
-  std::cout << summary.dump() << "\n";
+  out() << summary.dump() << "\n";
 }
 
 } // namespace genbsp_tool

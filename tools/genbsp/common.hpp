@@ -26,6 +26,29 @@ using geometry::rational;
 /// `genbsp --version` prints it and every JSON summary carries it.
 inline std::string version() { return GENBSP_VERSION " (" GENBSP_REVISION ")"; }
 
+/// Where a subcommand writes what it prints (standard output unless a
+/// caller, such as `genbsp batch` or the Python module, captures it for the
+/// running thread).
+inline std::ostream*& output_stream() {
+  thread_local std::ostream* s = &std::cout;
+  return s;
+}
+inline std::ostream& out() { return *output_stream(); }
+
+/// Whether this thread runs the jobs of a batch: subcommands then report no
+/// progress of their own.
+inline bool& batch_worker() {
+  thread_local bool b = false;
+  return b;
+}
+
+/// Whether `run` only checks its command line (a batch checks every job's
+/// before running any).
+inline bool& parse_only() {
+  thread_local bool b = false;
+  return b;
+}
+
 /// Bad input: reported as one line, exit status 2.
 struct usage_error : std::runtime_error {
   using std::runtime_error::runtime_error;
@@ -35,7 +58,7 @@ struct usage_error : std::runtime_error {
 /// file is either complete or untouched; "-" is standard output.
 inline void write_file(std::string const& path, std::string const& text) {
   if (path == "-") {
-    std::cout << text;
+    out() << text;
     return;
   }
   std::filesystem::path target(path), tmp = target;

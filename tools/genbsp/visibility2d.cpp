@@ -323,7 +323,7 @@ void visibility2d_job::run() const {
                {"seconds", seconds}};
   }
   summary["genbsp"] = version();
-  (output == "-" ? std::cerr : std::cout) << summary.dump() << "\n";
+  (output == "-" ? std::cerr : out()) << summary.dump() << "\n";
 }
 
 } // namespace genbsp_tool

@@ -1,0 +1,55 @@
+// The subcommands of genbsp as functions, for the program's entry, for
+// `genbsp batch` and for the Python module: one argument vector in, what
+// the command prints on `out()` (common.hpp), its files written.
+#pragma once
+
+#include <geometry/io/polygons.hpp>
+#include <geometry/io/scene.hpp>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace genbsp_tool {
+
+/// A scene file read once: its faces as written, and (when asked) its
+/// convex polygons, as every map subcommand starts from them.
+struct scene_data {
+  std::string path;               ///< the name subcommands know it by
+  geometry::io::scene scene;      ///< as read
+  geometry::io::prepared prepared; ///< its convex polygons, when `has_prepared`
+  bool has_prepared = false;
+};
+
+/// Reads `path` (a `geometry::io::read_error` for bad input), and prepares
+/// its convex polygons when `prepare`.
+std::shared_ptr<scene_data const> read_scene_data(std::string const& path, bool prepare = true);
+
+/// While alive, subcommands run on this thread that name `data->path` use
+/// `data` instead of reading the file again (scopes nest).
+class scene_scope {
+public:
+  explicit scene_scope(std::shared_ptr<scene_data const> data);
+  ~scene_scope();
+  scene_scope(scene_scope const&) = delete;
+  scene_scope& operator=(scene_scope const&) = delete;
+
+private:
+  std::shared_ptr<scene_data const> data_;
+  scene_data const* previous_;
+};
+
+/// The scene `path`: the one of this thread's innermost `scene_scope`
+/// when it names `path`, else read from the file.
+std::shared_ptr<scene_data const> scene_data_of(std::string const& path, bool prepare = true);
+
+/// Runs the command line `argv` (`argv[0]` the program's name): its exit
+/// status; bad input throws `usage_error` or `geometry::io::read_error`.
+int run(int argc, char** argv);
+int run(std::vector<std::string> const& args);
+
+/// `run`, with errors reported on standard error as one line: status 2 for
+/// bad input, 1 for an internal error.
+int run_main(int argc, char** argv);
+
+} // namespace genbsp_tool
