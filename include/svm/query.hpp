@@ -5,6 +5,10 @@
 
 #include "build.hpp"
 
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
 #include <set>
 
 namespace svm {
@@ -17,6 +21,38 @@ template <geometry::number FT> index locate_face(visibility_map<FT> const& vm, g
   auto n = t.root();
   while (!t.is_leaf(n)) n = t.child(n, geometry::s2::side(t.splitter(n), d) == geometry::oriented_side::negative ? -1 : +1);
   return t.leaf_data(n);
+}
+
+/// The direction `(d[0], d[1], d[2])` exactly as the doubles are (finite,
+/// not all zero).  A double is m·2^e with an integer m below 2^53, so after
+/// one common shift the three are integers: below 2^126 they are made
+/// without GMP.
+template <geometry::number FT> geometry::s2::point<FT> direction_of_doubles(std::array<double, 3> const& d) {
+  if constexpr (!geometry::exact_field<FT>) {
+    return geometry::s2::point<FT>(std::array<FT, 3>{d[0], d[1], d[2]});
+  } else {
+    std::array<std::int64_t, 3> m{};
+    std::array<int, 3> e{};
+    int lowest = 0;
+    bool any = false;
+    for (std::size_t i = 0; i < 3; ++i) {
+      if (d[i] == 0) continue;
+      m[i] = static_cast<std::int64_t>(std::ldexp(std::frexp(d[i], &e[i]), 53));
+      e[i] -= 53;
+      lowest = any ? std::min(lowest, e[i]) : e[i];
+      any = true;
+    }
+    int highest = lowest;
+    for (std::size_t i = 0; i < 3; ++i)
+      if (m[i] != 0) highest = std::max(highest, e[i]);
+    if (any && highest - lowest <= 72) {
+      std::array<geometry::detail::int128, 3> z{};
+      for (std::size_t i = 0; i < 3; ++i)
+        if (m[i] != 0) z[i] = static_cast<geometry::detail::int128>(m[i]) * (static_cast<geometry::detail::int128>(1) << (e[i] - lowest));
+      return geometry::s2::point<FT>::from_integers(geometry::detail::integer_vector<3>(z));
+    }
+    return geometry::s2::point<FT>(std::array<FT, 3>{FT(d[0]), FT(d[1]), FT(d[2])});
+  }
 }
 
 /// The input face visible in direction `d`, or −1.

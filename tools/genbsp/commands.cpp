@@ -99,20 +99,8 @@ loaded load(map_job const& job) {
   return {d, d->prepared, d->scene.faces.size()};
 }
 
-/// The scene's convex polygons in the number type `FT` (rounded to doubles for `double`).
-template <class FT> std::vector<svm::polygon<FT>> polygons_in(loaded const& l) {
-  std::vector<svm::polygon<FT>> out;
-  out.reserve(l.prepared.polygons.size());
-  for (auto const& p : l.prepared.polygons) {
-    if constexpr (std::is_same_v<FT, rational>) out.push_back({p.vertices, p.face});
-    else {
-      std::vector<geometry::e3::point<FT>> v;
-      for (auto const& q : p.vertices) v.emplace_back(q.x().convert_to<double>(), q.y().convert_to<double>(), q.z().convert_to<double>());
-      out.push_back({std::move(v), p.face});
-    }
-  }
-  return out;
-}
+/// The scene's convex polygons in the number type `FT`.
+template <class FT> std::vector<svm::polygon<FT>> polygons_in(loaded const& l) { return genbsp_tool::polygons_in<FT>(l.prepared); }
 
 /// Lights in the number type `FT`.
 template <class FT> std::vector<svm::light_source<FT>> lights_in(std::vector<svm::light_source<rational>> const& lights) {
@@ -671,6 +659,15 @@ std::shared_ptr<scene_data const> scene_data_of(std::string const& path, bool pr
   if (auto const* p = preloaded(); p && p->path == path && (p->has_prepared || !prepare))
     return std::shared_ptr<scene_data const>(std::shared_ptr<scene_data const>{}, p); // borrowed: the scope owns it
   return read_scene_data(path, prepare);
+}
+
+std::string map_json_text(svm::visibility_map<rational> const& vm, geometry::e3::point<rational> const& eye,
+                          std::shared_ptr<scene_data const> const& scene) {
+  return map_json(vm, eye, loaded{scene, scene->prepared, scene->scene.faces.size()}).dump(1) + "\n";
+}
+std::string map_json_text(svm::visibility_map<double> const& vm, geometry::e3::point<rational> const& eye,
+                          std::shared_ptr<scene_data const> const& scene) {
+  return map_json(vm, eye, loaded{scene, scene->prepared, scene->scene.faces.size()}).dump(1) + "\n";
 }
 
 int run(std::vector<std::string> const& args) {

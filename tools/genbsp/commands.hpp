@@ -5,6 +5,7 @@
 
 #include <geometry/io/polygons.hpp>
 #include <geometry/io/scene.hpp>
+#include <svm/build.hpp>
 
 #include <memory>
 #include <string>
@@ -42,6 +43,29 @@ private:
 /// The scene `path`: the one of this thread's innermost `scene_scope`
 /// when it names `path`, else read from the file.
 std::shared_ptr<scene_data const> scene_data_of(std::string const& path, bool prepare = true);
+
+/// The scene's convex polygons in the number type `FT` (rounded to doubles
+/// for `double`), labelled by their input faces.
+template <class FT> std::vector<svm::polygon<FT>> polygons_in(geometry::io::prepared const& p) {
+  std::vector<svm::polygon<FT>> out;
+  out.reserve(p.polygons.size());
+  for (auto const& q : p.polygons) {
+    if constexpr (std::is_same_v<FT, geometry::rational>) out.push_back({q.vertices, q.face});
+    else {
+      std::vector<geometry::e3::point<FT>> v;
+      for (auto const& x : q.vertices) v.emplace_back(x.x().convert_to<double>(), x.y().convert_to<double>(), x.z().convert_to<double>());
+      out.push_back({std::move(v), q.face});
+    }
+  }
+  return out;
+}
+
+/// MAP.json of a map of `scene` from `eye` (docs/map-format.md), as
+/// `genbsp map` writes it.
+std::string map_json_text(svm::visibility_map<geometry::rational> const& vm, geometry::e3::point<geometry::rational> const& eye,
+                          std::shared_ptr<scene_data const> const& scene);
+std::string map_json_text(svm::visibility_map<double> const& vm, geometry::e3::point<geometry::rational> const& eye,
+                          std::shared_ptr<scene_data const> const& scene);
 
 /// Runs the command line `argv` (`argv[0]` the program's name): its exit
 /// status; bad input throws `usage_error` or `geometry::io::read_error`.
