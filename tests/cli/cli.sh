@@ -502,6 +502,8 @@ PY
 "$genbsp" batch "$work/batch/jobs.json" --shard 1/3 >"$work/batch/shard1"
 "$genbsp" batch "$work/batch/jobs.json" --shard 2/3 >"$work/batch/shard2"
 check "batch: three shards run every job once" test "$(cat "$work"/batch/shard? | grep -o '"job":[0-9]*' | sort | tr '\n' ' ')" = '"job":0 "job":1 "job":2 "job":3 '
+"$genbsp" batch "$work/batch/jobs.json" --progress >/dev/null 2>"$work/batch/progress"
+check "batch: --progress counts the jobs on standard error" grep -q 'genbsp: batch 4/4 jobs, 0 failed' "$work/batch/progress"
 check "batch: a shard's summary names it" grep -q '"shard":"1/3"' "$work/batch/shard1"
 # A job that fails while running: its status 2, its files gone, the other jobs done.
 cat >"$work/batch/fails.json" <<JSON
