@@ -235,7 +235,12 @@ json run_batch(batch_plan const& plan, std::shared_ptr<scene_data const> const& 
     std::fflush(stderr);
   };
   auto work = [&] {
-    batch_worker() = true;
+    // The calling thread works too; it gets its flag back afterwards.
+    struct worker_flag {
+      bool previous = batch_worker();
+      worker_flag() { batch_worker() = true; }
+      ~worker_flag() { batch_worker() = previous; }
+    } flag;
     scene_scope scope(scene);
     for (std::size_t i; (i = next.fetch_add(1)) < todo.size();) {
       auto const& job = *todo[i];

@@ -516,7 +516,7 @@ std::string shadow_output(map_job const& job, std::vector<std::string> const& li
   if (lights.empty()) throw usage_error("shadow: give at least one --light X,Y,Z or --sun DX,DY,DZ");
   auto colours = [&] {
     std::vector<std::optional<geometry::io::rgb>> c;
-    for (auto const& f : scene_data_of(job.scene_path, false)->scene.faces) c.push_back(f.colour);
+    for (auto const& f : l.data->scene.faces) c.push_back(f.colour);
     return c;
   }();
   svm::shadow_options so;
