@@ -35,6 +35,8 @@ __all__ = [
     "Boolean2D",
     "BooleanS2",
     "CsgResult",
+    "Visibility2D",
+    "visibility2d",
     "BatchResult",
     "boolean2d",
     "boolean_s2",
@@ -193,6 +195,25 @@ class Scene:
         """
         eye_text = _triple(eye, "eye")
         return VisibilityMap(self, self._s.visibility_map(eye_text, bool(exact), bool(cull_backfaces), bool(simplify)))
+
+    def shadows(self, light: Sequence[Sequence[Any]] = (), sun: Sequence[Sequence[Any]] = (), exact: bool = True) -> dict[str, Any]:
+        """Every face's lit and shadowed area from point lights (``light``,
+        points) and lights at infinity (``sun``, directions towards them),
+        computed exactly and reported in doubles, as ``genbsp shadow`` writes
+        them: ``{"lights": [...], "faces": [{"face", "area", "lit_area"
+        (one per light), "shadowed_area"}, ...], "stats": {...}}``."""
+        args = ["shadow", self.name]
+        for p in light:
+            args += ["--light", ",".join(_triple(p, "light"))]
+        for d in sun:
+            args += ["--sun", ",".join(_triple(d, "sun"))]
+        if not exact:
+            args += ["--number", "double"]
+        with tempfile.TemporaryDirectory(prefix="genbsp-") as tmp:
+            out = os.path.join(tmp, "shadows.json")
+            _genbsp.run(args + ["-o", out], self._s)
+            with open(out) as f:
+                return json.load(f)
 
     def __reduce__(self) -> Any:
         return (_scene_from_state, (self._s.exact_vertices(), self._s.face_indices(), self.name))
@@ -411,6 +432,42 @@ def boolean_s2(a: Any, b: Any, op: str) -> BooleanS2:
     rings as for :func:`boolean2d`."""
     r = _genbsp.boolean_s2(_operand(a, "a"), _operand(b, "b"), op)
     return BooleanS2(r["wkt"], r["geojson"], r["area"], r["area_km2"])
+
+
+@dataclass(frozen=True)
+class Visibility2D:
+    """A 2D visibility polygon: WKT, GeoJSON (each boundary piece naming its
+    wall), the exact area and whether the view was bounded by walls."""
+
+    wkt: str
+    geojson: str
+    area: Fraction
+    bounded: bool
+
+
+def visibility2d(walls: Any, eye: Sequence[Any], box: Sequence[Any] | None = None) -> Visibility2D:
+    """The part of the plane the point ``eye`` sees among opaque walls,
+    exactly.  ``walls`` is WKT or GeoJSON text (polygons with holes and line
+    strings; every edge is a wall) or polygons as rings, as for
+    :func:`boolean2d`.  ``box`` (x0, y0, x1, y1) bounds an unbounded view."""
+    text = _operand(walls, "walls")
+    e = [_exact_text(c, "eye") for c in eye]
+    if len(e) != 2:
+        raise ValueError(f"eye: expected two numbers, got {len(e)}")
+    args = ["--eye", ",".join(e)]
+    if box is not None:
+        args += ["--box", ",".join(_exact_text(c, "box") for c in box)]
+    ext = ".geojson" if text.lstrip().startswith("{") else ".wkt"
+    with tempfile.TemporaryDirectory(prefix="genbsp-") as tmp:
+        src, wkt, gj = (os.path.join(tmp, n) for n in ("walls" + ext, "seen.wkt", "seen.geojson"))
+        with open(src, "w") as f:
+            f.write(text)
+        _, summary = _genbsp.run(["visibility2d", src, *args, "-o", wkt])
+        _genbsp.run(["visibility2d", src, *args, "-o", gj])
+        with open(wkt) as f, open(gj) as g:
+            w, j = f.read(), g.read()
+    s = json.loads(summary)
+    return Visibility2D(w, j, _fraction(s["area_exact"]), bool(s.get("bounded", True)))
 
 
 @dataclass(frozen=True)

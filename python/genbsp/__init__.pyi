@@ -24,6 +24,7 @@ class Scene:
     def num_polygons(self) -> int: ...
     def vertices(self) -> list[tuple[Fraction, Fraction, Fraction]]: ...
     def faces(self) -> list[list[int]]: ...
+    def shadows(self, light: Sequence[Sequence[Number]] = ..., sun: Sequence[Sequence[Number]] = ..., exact: bool = ...) -> dict[str, Any]: ...
     def visibility_map(self, eye: Sequence[Number], exact: bool = ..., cull_backfaces: bool = ..., simplify: bool = ...) -> VisibilityMap: ...
 
 class VisibilityMap:
@@ -60,6 +61,14 @@ class BooleanS2:
     geojson: str
     area: float
     area_km2: float
+
+class Visibility2D:
+    wkt: str
+    geojson: str
+    area: Fraction
+    bounded: bool
+
+def visibility2d(walls: Any, eye: Sequence[Number], box: Sequence[Number] | None = ...) -> Visibility2D: ...
 
 class CsgResult:
     vertices: npt.NDArray[np.float64]

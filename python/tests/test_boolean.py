@@ -121,3 +121,27 @@ def test_boolean_errors():
         genbsp.csg((v, f[:-1]), (v, f), "union")
     with pytest.raises(FileNotFoundError):
         genbsp.csg("missing.off", (v, f), "union")
+
+
+def test_visibility2d_around_a_pillar():
+    # A 10 x 10 room with a pillar [4, 6] x [7, 8]; from (5, 5) the pillar
+    # hides the trapezoid between y = 7 (width 2) and y = 10 (width 5): 10.5.
+    room = "POLYGON((0 0, 10 0, 10 10, 0 10, 0 0), (4 7, 6 7, 6 8, 4 8, 4 7))"
+    v = genbsp.visibility2d(room, [5, 5])
+    assert v.area == Fraction(179, 2) and v.bounded
+    assert json.loads(v.geojson)["type"] == "Feature"
+    with pytest.raises(ValueError, match="two numbers"):
+        genbsp.visibility2d(room, [5, 5, 5])
+
+
+def test_shadow_of_a_square_on_the_floor():
+    # A unit square at height 1 under a point light at height 10: its shadow
+    # on the floor is the square scaled by 10/9 (floor face 1).
+    v = [(-2, -2, 0), (2, -2, 0), (2, 2, 0), (-2, 2, 0), (Fraction(-1, 2), Fraction(-1, 2), 1), (Fraction(1, 2), Fraction(-1, 2), 1),
+         (Fraction(1, 2), Fraction(1, 2), 1), (Fraction(-1, 2), Fraction(1, 2), 1)]
+    scene = genbsp.Scene.from_arrays(v, [[0, 1, 2, 3], [4, 5, 6, 7]])
+    s = scene.shadows(light=[(0, 0, 10)])
+    floor = next(f for f in s["faces"] if f["face"] == 0)
+    assert floor["area"] == pytest.approx(16)
+    assert floor["shadowed_area"] == pytest.approx(100 / 81, rel=1e-12)
+    assert floor["lit_area"][0] == pytest.approx(16 - 100 / 81, rel=1e-12)
