@@ -343,6 +343,8 @@ class VisibilityMap:
         if path is not None:
             status, text = _genbsp.run(args + ["-o", os.fspath(path)], self.scene._s)
             return json.loads(text) if text.strip() else None
+        if options.get("projection") == "cube" or options.get("split_layers"):
+            raise ValueError("render: a cube map or split layers write several files; give path")
         if format not in ("svg", "pdf", "eps", "png"):
             raise ValueError(f"render: format is svg, pdf, eps or png, not {format!r}")
         with tempfile.TemporaryDirectory(prefix="genbsp-") as tmp:

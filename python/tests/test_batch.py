@@ -60,10 +60,12 @@ def test_batch_shards_and_failures(scenes, tmp_path):
     jobs = [{"eye": e, "stats": True} for e in eyes(eye, 7)]
     parts = [genbsp.batch(s, jobs, shard=(i, 3)).jobs for i in range(3)]
     assert sorted(r["job"] for p in parts for r in p) == list(range(7))
-    bad = [{"eye": [0, 0, 0], "map": str(tmp_path / "a.json")}, {"eye": [0, 0, 0], "render": {"output": str(tmp_path / "b.txt")}}]
+    bad = [{"eye": [0, 0, 0], "map": str(tmp_path / "a.json")},
+           {"eye": [0, 0, 0], "map": str(tmp_path / "b.json"), "render": {"output": str(tmp_path / "b.txt")}}]
     r = genbsp.batch(s, bad)
     assert r.jobs[0]["ok"] and not r.jobs[1]["ok"] and "unknown output format" in r.jobs[1]["error"]
-    assert r.summary["failed"] == 1 and (tmp_path / "a.json").exists() and not (tmp_path / "b.txt").exists()
+    # Job 1's map was written before its render failed, then removed: whole or not at all.
+    assert r.summary["failed"] == 1 and (tmp_path / "a.json").exists() and not (tmp_path / "b.json").exists()
     with pytest.raises(ValueError, match='unknown key "rendr"'):
         genbsp.batch(s, [{"eye": [0, 0, 0], "rendr": {}}])
     with pytest.raises(ValueError, match="shard"):

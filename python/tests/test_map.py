@@ -175,3 +175,5 @@ def test_bad_input_raises(tmp_path):
         m.render(fov=400)
     with pytest.raises(IndexError):
         m.neighbours(10**6)
+    with pytest.raises(ValueError, match="give path"):
+        m.render(projection="cube")
