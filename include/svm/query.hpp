@@ -46,9 +46,16 @@ template <geometry::number FT> geometry::s2::point<FT> direction_of_doubles(std:
     for (std::size_t i = 0; i < 3; ++i)
       if (m[i] != 0) highest = std::max(highest, e[i]);
     if (any && highest - lowest <= 72) {
-      std::array<geometry::detail::int128, 3> z{};
-      for (std::size_t i = 0; i < 3; ++i)
-        if (m[i] != 0) z[i] = static_cast<geometry::detail::int128>(m[i]) * (static_cast<geometry::detail::int128>(1) << (e[i] - lowest));
+      using geometry::detail::int128, geometry::detail::uint128;
+      std::array<int128, 3> z{};
+      uint128 g = 0;
+      for (std::size_t i = 0; i < 3; ++i) {
+        if (m[i] == 0) continue;
+        z[i] = static_cast<int128>(m[i]) * (static_cast<int128>(1) << (e[i] - lowest));
+        g = geometry::detail::gcd(g, z[i] < 0 ? -static_cast<uint128>(z[i]) : static_cast<uint128>(z[i]));
+      }
+      // Primitive, as every exact vector is: equal directions compare equal.
+      for (auto& x : z) x /= static_cast<int128>(g);
       return geometry::s2::point<FT>::from_integers(geometry::detail::integer_vector<3>(z));
     }
     return geometry::s2::point<FT>(std::array<FT, 3>{FT(d[0]), FT(d[1]), FT(d[2])});

@@ -15,6 +15,7 @@
 
 #include <cmath>
 #include <iostream>
+#include <limits>
 #include <numbers>
 
 using namespace geometry;
@@ -364,6 +365,26 @@ TEST_CASE("queries: visible polygons, their faces, adjacency", "[svm][query]") {
   CHECK(std::count(around.begin(), around.end(), near[0]) == 1);
   CHECK(svm::adjacent_faces(vm.map, near[0]) == std::vector<svm::index>{ring[0]});
   CHECK(svm::face_cycles(vm.map)[ring[0]].size() == 2);
+}
+
+TEST_CASE("a direction read from doubles is the direction of their exact values", "[svm][query]") {
+  // Equal directions compare equal whichever way they were made, including
+  // subnormals, common odd factors and exponents too far apart for 128 bits.
+  double const tiny = std::numeric_limits<double>::denorm_min();
+  std::vector<std::array<double, 3>> cases{{3, 6, 9},          {-0.75, 0.5, 0},   {1e-300, 1, -1e300}, {tiny, 0, 0},
+                                           {tiny, 3 * tiny, 1}, {0, -5e-324, 2}, {1, 0x1p-60, 0x1p60}, {0.1, 0.2, 0.3},
+                                           {-1, -1, -1},       {0x1p-1074, 0x1p-1000, 0x1p-1050}};
+  for (auto const& d : cases) {
+    auto fast = svm::direction_of_doubles<Q>(d);
+    s2::point<Q> slow(std::array<Q, 3>{Q(d[0]), Q(d[1]), Q(d[2])});
+    INFO(d[0] << " " << d[1] << " " << d[2]);
+    CHECK(fast == slow);
+    for (std::size_t i = 0; i < 3; ++i) CHECK(fast.sign_at(i) == slow.sign_at(i));
+  }
+  // A positive multiple is the same direction, a negative one is not.
+  CHECK(svm::direction_of_doubles<Q>({3, 6, 9}) == svm::direction_of_doubles<Q>({1, 2, 3}));
+  CHECK(svm::direction_of_doubles<Q>({0.5, 0x1p-70, 0}) == svm::direction_of_doubles<Q>({0x1p69, 1, 0}));
+  CHECK_FALSE(svm::direction_of_doubles<Q>({-1, -2, -3}) == svm::direction_of_doubles<Q>({1, 2, 3}));
 }
 
 TEST_CASE("a closed sphere: culling back faces changes no answer", "[svm][scenes]") {
