@@ -332,4 +332,25 @@ inline std::vector<spherical_polygon> spherical_polygons(region_s2 const& r) {
   return out;
 }
 
+/// The polygons of a region as longitude/latitude rings in degrees (the
+/// nearest doubles, read exactly), ready for WKT or GeoJSON.  A region that
+/// is the whole sphere has no ring: `std::invalid_argument`.
+inline multipolygon lonlat_polygons(region_s2 const& r) {
+  auto lonlat = [](loop const& l) {
+    ring out;
+    for (auto const& d : l) {
+      auto [lon, lat] = to_lonlat(d);
+      out.emplace_back(geometry::rational(lon), geometry::rational(lat));
+    }
+    return out;
+  };
+  multipolygon m;
+  for (auto const& p : spherical_polygons(r)) {
+    geometry::io::polygon_with_holes q{lonlat(p.outer), {}};
+    for (auto const& h : p.holes) q.holes.push_back(lonlat(h));
+    m.push_back(std::move(q));
+  }
+  return m;
+}
+
 } // namespace boolean

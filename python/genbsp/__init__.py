@@ -216,14 +216,17 @@ class Scene:
                 return json.load(f)
 
     def __reduce__(self) -> Any:
-        return (_scene_from_state, (self._s.exact_vertices(), self._s.face_indices(), self.name))
+        return (_scene_from_state, (self._s.exact_vertices(), self._s.face_indices(), self.name, self._s.face_colours()))
 
     def __repr__(self) -> str:
         return f"<genbsp.Scene {self.name!r}: {self.num_faces} faces>"
 
 
-def _scene_from_state(vertices: list[list[str]], faces: list[list[int]], name: str) -> Scene:
-    return Scene(_genbsp.Scene.from_text([list(v) for v in vertices], faces))
+def _scene_from_state(
+    vertices: list[list[str]], faces: list[list[int]], name: str, colours: list[Any] | None = None
+) -> Scene:
+    """A pickled scene as it was: its exact vertices, faces, colours and name."""
+    return Scene(_genbsp.Scene.from_text([list(v) for v in vertices], faces, colours or [], name))
 
 
 class VisibilityMap:

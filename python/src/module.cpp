@@ -18,6 +18,7 @@
 #include <pybind11/stl.h>
 
 #include <atomic>
+#include <cerrno>
 #include <cmath>
 #include <memory>
 #include <sstream>
@@ -47,18 +48,31 @@ using genbsp_tool::scene_data;
   }
 }
 
-/// Runs `f`, the GIL released, with library errors as Python exceptions
-/// (a file that cannot be opened is an OSError).
+/// A file that cannot be opened or written as the OSError subclass of its
+/// `errno` value, with the library's one-line message.
+[[noreturn]] void throw_os_error(int code, char const* message) {
+  PyObject* type = code == ENOENT   ? PyExc_FileNotFoundError
+                   : code == EACCES || code == EPERM ? PyExc_PermissionError
+                   : code == EISDIR ? PyExc_IsADirectoryError
+                   : code == ENOTDIR ? PyExc_NotADirectoryError
+                   : code == EEXIST ? PyExc_FileExistsError
+                                    : PyExc_OSError;
+  PyErr_SetString(type, message);
+  throw py::error_already_set();
+}
+
+/// Runs `f`, the GIL released, with library errors as Python exceptions: a
+/// file that cannot be opened or written is an OSError, bad content a
+/// ValueError.
 template <class F> auto guarded(F&& f) {
   try {
     py::gil_scoped_release unlocked;
     return f();
   } catch (geometry::io::read_error const& e) {
-    if (e.message.starts_with("cannot open")) {
-      PyErr_SetString(e.message.find("no such file") != std::string::npos ? PyExc_FileNotFoundError : PyExc_OSError, e.what());
-      throw py::error_already_set();
-    }
+    if (e.error_code != 0) throw_os_error(e.error_code, e.what());
     throw py::value_error(e.what());
+  } catch (genbsp_tool::file_error const& e) {
+    throw_os_error(e.code, e.what());
   } catch (py::error_already_set const&) {
     throw;
   } catch (std::bad_alloc const&) {
@@ -93,9 +107,14 @@ scene scene_from_file(std::string const& path) {
 }
 
 /// A scene from exact vertex coordinates (as text) and faces (index lists).
-scene scene_from_text(std::vector<std::array<std::string, 3>> const& vertices, std::vector<std::vector<std::int64_t>> const& faces) {
+using face_colour = std::optional<std::array<double, 3>>;
+
+scene scene_from_text(std::vector<std::array<std::string, 3>> const& vertices, std::vector<std::vector<std::int64_t>> const& faces,
+                      std::vector<face_colour> const& colours = {}, std::optional<std::string> const& name = {}) {
+  if (!colours.empty() && colours.size() != faces.size())
+    throw py::value_error("colours: expected one per face (" + std::to_string(faces.size()) + "), got " + std::to_string(colours.size()));
   auto d = std::make_shared<scene_data>();
-  d->path = "<scene " + std::to_string(++scenes_made) + ">";
+  d->path = name ? *name : "<scene " + std::to_string(++scenes_made) + ">";
   d->scene.vertices.reserve(vertices.size());
   for (std::size_t i = 0; i < vertices.size(); ++i)
     d->scene.vertices.emplace_back(exact(vertices[i][0], "vertex " + std::to_string(i)), exact(vertices[i][1], "vertex " + std::to_string(i)),
@@ -108,6 +127,12 @@ scene scene_from_text(std::vector<std::array<std::string, 3>> const& vertices, s
         throw py::value_error("face " + std::to_string(f) + ": vertex index " + std::to_string(k) + " out of range (" +
                               std::to_string(vertices.size()) + " vertices)");
       face.vertices.push_back(static_cast<std::uint32_t>(k));
+    }
+    if (!colours.empty() && colours[f]) {
+      auto [r, g, b] = *colours[f];
+      for (double c : {r, g, b})
+        if (!(c >= 0 && c <= 1)) throw py::value_error("face " + std::to_string(f) + ": colour components must be in [0, 1]");
+      face.colour = geometry::io::rgb{r, g, b};
     }
     d->scene.faces.push_back(std::move(face));
   }
@@ -168,18 +193,27 @@ py::array_t<std::int64_t> locate(visibility_map const& m, py::array_t<double, py
   py::array_t<std::int64_t> out(n);
   auto d = directions.unchecked<2>();
   auto r = out.mutable_unchecked<1>();
-  // Checked first, with the GIL held, so that the error names the row.
-  for (py::ssize_t i = 0; i < n; ++i) {
-    double x = d(i, 0), y = d(i, 1), z = d(i, 2);
-    if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
-      throw py::value_error("directions[" + std::to_string(i) + "]: coordinates must be finite");
-    if (x == 0 && y == 0 && z == 0) throw py::value_error("directions[" + std::to_string(i) + "]: the zero vector is no direction");
+  // Each row is read once and checked as read, the GIL released: another
+  // thread may write the array meanwhile, so no earlier check would hold.
+  py::ssize_t bad = -1;
+  bool zero = false;
+  {
+    py::gil_scoped_release unlocked;
+    m.visit([&](auto const& vm) {
+      using FT = typename std::remove_cvref_t<decltype(vm)>::number_type;
+      for (py::ssize_t i = 0; i < n; ++i) {
+        std::array<double, 3> x{d(i, 0), d(i, 1), d(i, 2)};
+        if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]) || (x[0] == 0 && x[1] == 0 && x[2] == 0)) {
+          bad = i, zero = std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]);
+          return;
+        }
+        r(i) = svm::locate(vm, svm::direction_of_doubles<FT>(x));
+      }
+    });
   }
-  py::gil_scoped_release unlocked;
-  m.visit([&](auto const& vm) {
-    using FT = typename std::remove_cvref_t<decltype(vm)>::number_type;
-    for (py::ssize_t i = 0; i < n; ++i) r(i) = svm::locate(vm, svm::direction_of_doubles<FT>({d(i, 0), d(i, 1), d(i, 2)}));
-  });
+  if (bad >= 0)
+    throw py::value_error("directions[" + std::to_string(bad) + "]: " +
+                          (zero ? "the zero vector is no direction" : "coordinates must be finite"));
   return out;
 }
 
@@ -327,21 +361,7 @@ py::dict boolean_s2(std::string const& a, std::string const& b, std::string cons
   auto r = guarded([&] {
     auto A = boolean::spherical_region(read_operand(a, "a")), B = boolean::spherical_region(read_operand(b, "b"));
     auto region = boolean::apply(o, A, B);
-    auto polys = boolean::spherical_polygons(region);
-    geometry::io::multipolygon m;
-    auto lonlat = [](boolean::loop const& l) {
-      boolean::ring out;
-      for (auto const& d : l) {
-        auto [lon, lat] = boolean::to_lonlat(d);
-        out.emplace_back(rational(lon), rational(lat));
-      }
-      return out;
-    };
-    for (auto const& p : polys) {
-      geometry::io::polygon_with_holes q{lonlat(p.outer), {}};
-      for (auto const& h : p.holes) q.holes.push_back(lonlat(h));
-      m.push_back(std::move(q));
-    }
+    auto m = boolean::lonlat_polygons(region);
     return result{geometry::io::to_wkt(m), geometry::io::to_geojson(m), boolean::area(region)};
   });
   py::dict d;
@@ -402,7 +422,8 @@ PYBIND11_MODULE(_genbsp, mod) {
 
   py::class_<scene>(mod, "Scene")
       .def_static("from_file", &scene_from_file, py::arg("path"))
-      .def_static("from_text", &scene_from_text, py::arg("vertices"), py::arg("faces"))
+      .def_static("from_text", &scene_from_text, py::arg("vertices"), py::arg("faces"), py::arg("colours") = std::vector<face_colour>{},
+                  py::arg("name") = std::nullopt)
       .def_static("from_doubles", &scene_from_doubles, py::arg("vertices"), py::arg("faces"))
       .def_property_readonly("name", [](scene const& s) { return s.data->path; })
       .def_property_readonly("faces", [](scene const& s) { return s.data->scene.faces.size(); })
@@ -412,6 +433,13 @@ PYBIND11_MODULE(_genbsp, mod) {
              std::vector<std::array<std::string, 3>> out;
              for (auto const& p : s.data->scene.vertices)
                out.push_back({genbsp_tool::exact_text(p.x()), genbsp_tool::exact_text(p.y()), genbsp_tool::exact_text(p.z())});
+             return out;
+           })
+      .def("face_colours",
+           [](scene const& s) {
+             std::vector<face_colour> out;
+             for (auto const& f : s.data->scene.faces)
+               out.push_back(f.colour ? face_colour(std::array<double, 3>{f.colour->r, f.colour->g, f.colour->b}) : std::nullopt);
              return out;
            })
       .def("face_indices",

@@ -177,3 +177,42 @@ def test_bad_input_raises(tmp_path):
         m.neighbours(10**6)
     with pytest.raises(ValueError, match="give path"):
         m.render(projection="cube")
+
+
+def test_file_errors_are_os_errors_and_bad_content_value_errors(tmp_path):
+    """A file that cannot be opened or written is the OSError of its cause;
+    a file that is there but is not a scene is a ValueError."""
+    ply = tmp_path / "scene.ply"
+    ply.write_text("ply\n")
+    with pytest.raises(ValueError, match="unknown scene format"):
+        genbsp.Scene.from_file(ply)
+    (tmp_path / "folder.off").mkdir()
+    with pytest.raises(IsADirectoryError, match="is a directory"):
+        genbsp.Scene.from_file(tmp_path / "folder.off")
+    s = genbsp.Scene.from_arrays([[0, 0, 1], [1, 0, 1], [0, 1, 1]], [[0, 1, 2]])
+    m = s.visibility_map([0, 0, 0])
+    for name in ("map.svg", "map.pdf"):
+        with pytest.raises(FileNotFoundError, match="cannot write"):
+            m.render(path=tmp_path / "no" / "such" / "folder" / name)
+    with pytest.raises(FileNotFoundError, match="cannot write"):
+        m.render(path=tmp_path / "no" / "map.svg", projection="cube")
+    # A bad extension is bad input, not a file error.
+    with pytest.raises(ValueError, match="unknown output format"):
+        m.render(path=tmp_path / "map.xyz")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["folder.off", "scene.ply"]
+
+
+def test_a_pickled_scene_keeps_its_colours_and_name(scenes):
+    """What a Dask worker gets is the scene itself: the same exact vertices,
+    faces, colours and name, so the same pictures."""
+    path, eye = scenes["room"]
+    s = genbsp.Scene.from_file(path)
+    t = pickle.loads(pickle.dumps(s))
+    assert t.name == s.name and t._s.face_colours() == s._s.face_colours()
+    assert sum(c is not None for c in t._s.face_colours()) == t.num_faces
+    a = s.visibility_map(eye).render(size=(160, 120))
+    b = t.visibility_map(eye).render(size=(160, 120))
+    assert a == b
+    # The colours are in the picture: without them it is another one.
+    bare = genbsp.Scene(genbsp._genbsp.Scene.from_text(s._s.exact_vertices(), s._s.face_indices()))
+    assert bare.visibility_map(eye).render(size=(160, 120)) != a

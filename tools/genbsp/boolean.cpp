@@ -153,25 +153,11 @@ void bool_job::run() const {
     if (ext == ".svg") throw usage_error(output + ": SVG output is for --geometry e2 (use .geojson or .wkt)");
     auto A = sphere_region(a), B = sphere_region(b);
     auto r = boolean::apply(operation(op), A, B);
-    std::vector<boolean::spherical_polygon> polys;
+    geometry::io::multipolygon m;
     try {
-      polys = boolean::spherical_polygons(r);
+      m = boolean::lonlat_polygons(r);
     } catch (std::invalid_argument const& e) {
       throw usage_error("the result is the whole sphere, which no ring can bound");
-    }
-    geometry::io::multipolygon m;
-    auto lonlat = [](boolean::loop const& l) {
-      boolean::ring out;
-      for (auto const& d : l) {
-        auto [lon, lat] = boolean::to_lonlat(d);
-        out.emplace_back(rational(lon), rational(lat));
-      }
-      return out;
-    };
-    for (auto const& p : polys) {
-      geometry::io::polygon_with_holes q{lonlat(p.outer), {}};
-      for (auto const& h : p.holes) q.holes.push_back(lonlat(h));
-      m.push_back(std::move(q));
     }
     text = geojson ? geometry::io::to_geojson(m) : geometry::io::to_wkt(m);
     double sr = boolean::area(r);

@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include <cctype>
+#include <cerrno>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -49,9 +50,21 @@ inline bool& parse_only() {
   return b;
 }
 
+/// Thrown, when `parse_only()`, by a command that has checked all it can
+/// check without reading its scene.
+struct options_checked {};
+
 /// Bad input: reported as one line, exit status 2.
 struct usage_error : std::runtime_error {
   using std::runtime_error::runtime_error;
+};
+
+/// A file that cannot be opened or written: bad input to the program (status
+/// 2) like any other, told apart for callers that answer it differently
+/// (Python raises OSError).  `code` is the `errno` value, 0 when unknown.
+struct file_error : usage_error {
+  int code = 0;
+  file_error(std::string const& text, int error_code) : usage_error(text), code(error_code) {}
 };
 
 /// Writes `text` to `path` through a temporary file and a rename, so that the
@@ -65,19 +78,22 @@ inline void write_file(std::string const& path, std::string const& text) {
   tmp += ".tmp" + std::to_string(::getpid());
   {
     std::ofstream out(tmp, std::ios::binary);
-    if (!out) throw usage_error(path + ": cannot write");
+    if (!out) {
+      int code = errno;
+      throw file_error(path + ": cannot write", code);
+    }
     out << text;
     out.flush();
     if (!out) {
       std::filesystem::remove(tmp);
-      throw usage_error(path + ": write failed");
+      throw file_error(path + ": write failed", EIO);
     }
   }
   std::error_code ec;
   std::filesystem::rename(tmp, target, ec);
   if (ec) {
     std::filesystem::remove(tmp);
-    throw usage_error(path + ": " + ec.message());
+    throw file_error(path + ": " + ec.message(), ec.value());
   }
 }
 
@@ -123,7 +139,10 @@ inline std::vector<number_line> read_number_lines(std::string const& path, std::
   std::istream* in = &std::cin;
   if (path != "-") {
     file.open(path);
-    if (!file) throw usage_error(path + ": cannot open");
+    if (!file) {
+      int code = errno;
+      throw file_error(path + ": cannot open", code);
+    }
     in = &file;
   }
   std::string name = path == "-" ? "<stdin>" : path;

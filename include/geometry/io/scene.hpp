@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstddef>
@@ -70,11 +71,12 @@ struct read_error : std::runtime_error {
   std::string file;    ///< the file name as given by the caller
   std::size_t line;    ///< 1-based line number, 0 when the error concerns the whole file
   std::string message; ///< the message alone, without the `FILE:LINE: ` prefix
+  int error_code = 0;  ///< a file that cannot be opened: its `errno` value (ENOENT, EACCES, EISDIR …); 0 for bad content
 
-  /// The error `message` at `line` of `file_name`.
-  read_error(std::string file_name, std::size_t line_number, std::string text)
+  /// The error `message` at `line` of `file_name` (`code`: see `error_code`).
+  read_error(std::string file_name, std::size_t line_number, std::string text, int code = 0)
       : std::runtime_error(format(file_name, line_number, text)), file(std::move(file_name)), line(line_number),
-        message(std::move(text)) {}
+        message(std::move(text)), error_code(code) {}
 
 private:
   // Newlines are replaced so that a strange file name cannot break the one-line promise.
@@ -649,11 +651,11 @@ inline scene read_scene(std::filesystem::path const& path) {
                                  (ext.empty() ? std::string("(no extension)") : detail::quoted(ext)),
                                  ", expected .off, .obj or .stl"));
   std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw read_error(file, 0, "cannot open: is a directory");
+  if (std::filesystem::is_directory(path, ec)) throw read_error(file, 0, "cannot open: is a directory", EISDIR);
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     bool exists = std::filesystem::exists(path, ec);
-    throw read_error(file, 0, exists ? "cannot open: not readable" : "cannot open: no such file");
+    throw read_error(file, 0, exists ? "cannot open: not readable" : "cannot open: no such file", exists ? EACCES : ENOENT);
   }
   return reader(in, file);
 }

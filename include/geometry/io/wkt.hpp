@@ -7,9 +7,12 @@
 
 #include "planar.hpp"
 
+#include <cerrno>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <system_error>
 
 namespace geometry::io {
 
@@ -173,7 +176,10 @@ inline multipolygon read_wkt(std::string_view text, std::string const& name, std
 /// Reads a whole file as text, or throws `read_error` naming it.
 inline std::string read_text(std::filesystem::path const& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw read_error(path.string(), 0, "cannot open the file");
+  if (!in) {
+    std::error_code ec;
+    throw read_error(path.string(), 0, "cannot open the file", std::filesystem::exists(path, ec) ? EACCES : ENOENT);
+  }
   std::ostringstream s;
   s << in.rdbuf();
   return s.str();
