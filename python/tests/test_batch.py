@@ -61,11 +61,15 @@ def test_batch_shards_and_failures(scenes, tmp_path):
     parts = [genbsp.batch(s, jobs, shard=(i, 3)).jobs for i in range(3)]
     assert sorted(r["job"] for p in parts for r in p) == list(range(7))
     bad = [{"eye": [0, 0, 0], "map": str(tmp_path / "a.json")},
-           {"eye": [0, 0, 0], "map": str(tmp_path / "b.json"), "render": {"output": str(tmp_path / "b.txt")}}]
+           {"eye": [0, 0, 0], "map": str(tmp_path / "b.json"), "render": {"output": str(tmp_path / "no" / "b.svg")}}]
     r = genbsp.batch(s, bad)
-    assert r.jobs[0]["ok"] and not r.jobs[1]["ok"] and "unknown output format" in r.jobs[1]["error"]
+    assert r.jobs[0]["ok"] and not r.jobs[1]["ok"] and "cannot write" in r.jobs[1]["error"]
     # Job 1's map was written before its render failed, then removed: whole or not at all.
     assert r.summary["failed"] == 1 and (tmp_path / "a.json").exists() and not (tmp_path / "b.json").exists()
+    # What can be checked before a job runs is, and nothing runs.
+    with pytest.raises(ValueError, match=r"job 1\.render: .*c\.txt: unknown output format"):
+        genbsp.batch(s, [{"eye": [0, 0, 0], "map": str(tmp_path / "c.json")}, {"eye": [0, 0, 0], "render": {"output": str(tmp_path / "c.txt")}}])
+    assert not (tmp_path / "c.json").exists()
     with pytest.raises(ValueError, match='unknown key "rendr"'):
         genbsp.batch(s, [{"eye": [0, 0, 0], "rendr": {}}])
     with pytest.raises(ValueError, match="shard"):
@@ -86,3 +90,41 @@ def test_dask_example_equals_the_serial_batch(scenes):
             assert len(client.scheduler_info()["workers"]) == 2
             spread = example.batch_on_cluster(client, scene, jobs, chunk=3)
     assert [comparable(r) for r in spread] == [comparable(r) for r in serial]
+
+
+@pytest.mark.parametrize("progress", [False, True])
+def test_batch_progress_on_a_terminal_is_what_was_asked(scenes, progress):
+    """progress=False is quiet even when standard error is a terminal;
+    progress=True reports there."""
+    pty = pytest.importorskip("pty")
+    import subprocess
+    import sys
+
+    path, eye = scenes["cube"]
+    code = (
+        "import genbsp, sys\n"
+        f"r = genbsp.batch({str(path)!r}, [{{'eye': {eye!r}, 'stats': True}}], workers=1, progress={progress})\n"
+        "assert r.summary['ok'] == 1\n"
+    )
+    leader, follower = pty.openpty()
+    try:
+        env = dict(os.environ, PYTHONPATH=os.pathsep.join(sys.path))
+        r = subprocess.run([sys.executable, "-c", code], stderr=follower, stdout=subprocess.PIPE, env=env, timeout=120)
+        os.close(follower)
+        follower = -1
+        chunks = []
+        while True:
+            try:
+                b = os.read(leader, 4096)
+            except OSError:  # the terminal's other end is closed
+                break
+            if not b:
+                break
+            chunks.append(b)
+        text = b"".join(chunks).decode()
+    finally:
+        if follower >= 0:
+            os.close(follower)
+        os.close(leader)
+    assert r.returncode == 0, text
+    assert ("genbsp: batch 1/1 jobs" in text) == progress, text

@@ -509,17 +509,53 @@ check "batch: a shard's summary names it" grep -q '"shard":"1/3"' "$work/batch/s
 cat >"$work/batch/fails.json" <<JSON
 {"scene": "$work/scene.off", "jobs": [
   {"eye": [0, 0, 0], "map": "kept.json"},
-  {"eye": [0, 0, 0], "map": "dropped.json", "render": {"output": "dropped.txt"}}]}
+  {"eye": [0, 0, 0], "map": "dropped.json", "render": {"output": "no/such/folder/dropped.svg"}}]}
 JSON
 "$genbsp" batch "$work/batch/fails.json" >"$work/batch/out3" 2>/dev/null
 check "batch: a failed job makes exit status 2" test $? -eq 2
-check "batch: the failed job says why" grep -q '"job":1,"ok":false,"error":"[^"]*dropped.txt: unknown output format' "$work/batch/out3"
+check "batch: the failed job says why" grep -q '"job":1,"ok":false,"error":"[^"]*dropped.svg: cannot write' "$work/batch/out3"
 check "batch: the other job's file is written" test -s "$work/batch/kept.json"
-check "batch: the failed job's files are removed" test ! -e "$work/batch/dropped.json" -a ! -e "$work/batch/dropped.txt"
+check "batch: the failed job's files are removed" test ! -e "$work/batch/dropped.json"
+# Every file a render writes is its job's: a cube map's faces and split layers too.
+cat >"$work/batch/many.json" <<JSON
+{"scene": "$work/scene.off", "jobs": [
+  {"eye": [0, 0, 0], "render": [{"output": "cube.svg", "projection": "cube", "size": [64, 64]},
+                                {"output": "layers.svg", "style": "lines", "split_layers": true},
+                                {"output": "nowhere/last.svg"}]}]}
+JSON
+"$genbsp" batch "$work/batch/many.json" >"$work/batch/out4" 2>/dev/null
+check "batch: a job failing after a cube map and split layers" grep -q '"job":0,"ok":false' "$work/batch/out4"
+check "batch: the cube map's faces and the layers are removed" test -z "$(ls "$work/batch" | grep -E '^(cube|layers)')"
+sed 's|"output": "nowhere/last.svg"|"output": "last.svg"|' "$work/batch/many.json" >"$work/batch/many-ok.json"
+"$genbsp" batch "$work/batch/many-ok.json" >"$work/batch/out5"
+check "batch: a cube map writes six faces" test "$(ls "$work/batch" | grep -cE '^cube-(front|right|back|left|up|down)\.svg$')" -eq 6
+check "batch: split layers are written and reported" python3 - "$work/batch" <<'PY'
+import json, os, sys
+d = sys.argv[1]
+job = json.loads(open(os.path.join(d, "out5")).readline())
+layers = sorted(f for f in os.listdir(d) if f.startswith("layers-"))
+reported = sorted(os.path.basename(f) for f in job["outputs"] if os.path.basename(f).startswith("layers-"))
+assert layers and reported == layers, (layers, reported)
+assert sorted(os.path.basename(f) for r in job["render"] for f in r.get("layer_files", [])) == layers
+PY
+echo '{"scene": "../scene.off", "jobs": [{"eye": [0, 0, 0], "render": {"output": "c.svg", "projection": "cube"}}, {"eye": [1, 0, 0], "render": {"output": "c-back.svg"}}]}' >"$work/batch/face.json"
+expect_error "batch: a file that is a cube map's face" 'job 1: image .*c-back.svg is written by job 0 too' "$genbsp" batch "$work/batch/face.json"
+echo '{"scene": "../scene.off", "jobs": [{"eye": [0, 0, 0], "render": {"output": "l.svg", "style": "lines", "split-layers": true}}, {"eye": [1, 0, 0], "map": "l-hidden-crease.svg"}]}' >"$work/batch/layer.json"
+expect_error "batch: a file that is a split layer" 'job 1: map .*l-hidden-crease.svg is written by job 0 too' "$genbsp" batch "$work/batch/layer.json"
 echo '{"scene": "../scene.off", "jobs": [{"eye": [0, 0, 0], "rendr": {}}]}' >"$work/batch/typo.json"
 expect_error "batch: unknown key" 'typo.json: job 0: unknown key "rendr"' "$genbsp" batch "$work/batch/typo.json"
 echo '{"scene": "../scene.off", "jobs": [{"eye": [0, 0, 0], "stats": true}, {"eye": [1, 0, 0], "render": {"output": "x.svg", "fov": 400}}]}' >"$work/batch/range.json"
-expect_error "batch: a bad option fails before any job runs" 'range.json: job 1: --fov' "$genbsp" batch "$work/batch/range.json"
+expect_error "batch: a bad option fails before any job runs" 'range.json: job 1.render: --fov' "$genbsp" batch "$work/batch/range.json"
+# What a command checks before it reads its scene is checked before any job runs, with its place.
+echo '{"scene": "../scene.off", "jobs": [{"eye": [0, 0, 0], "stats": true}, {"eye": [1, 0, 0], "render": [{"output": "a.svg"}, {"output": "b.txt"}]}]}' >"$work/batch/ext.json"
+expect_error "batch: a bad image extension, before any job runs" "ext.json: job 1.render\\[1\\]: .*b.txt: unknown output format" "$genbsp" batch "$work/batch/ext.json"
+echo '{"scene": "../scene.off", "jobs": [{"eye": [0, 0, 0], "map": "m.json", "up": [0, 0, 1]}]}' >"$work/batch/up.json"
+expect_error "batch: up without view_dir, before any job runs" 'up.json: job 0: --up is for --view-dir' "$genbsp" batch "$work/batch/up.json"
+echo '{"scene": "../scene.off", "jobs": [{"eye": [0, 0, 0], "render": {"output": "h.svg", "help": true}}]}' >"$work/batch/help.json"
+expect_error "batch: help is no render option" 'help.json: job 0.render.help: not a render option' "$genbsp" batch "$work/batch/help.json"
+echo '{"scene": "../scene.off", "jobs": [{"eye": [0, 0, 0], "stats": true}, {"eye": ["1", "2/0", 0], "stats": true}]}' >"$work/batch/badeye.json"
+expect_error "batch: an eye that is no number, before any job runs" 'badeye.json: job 1' "$genbsp" batch "$work/batch/badeye.json"
+check "batch: no file from a manifest refused" test ! -e "$work/batch/a.svg" -a ! -e "$work/batch/m.json"
 check "batch: nothing printed when the manifest is bad" test ! -s "$work/out"
 echo '{"scene": "../scene.off", "jobs": [{"eye": [0, 0, 0], "map": "same.json"}, {"eye": [1, 0, 0], "map": "./same.json"}]}' >"$work/batch/twice.json"
 expect_error "batch: two jobs writing one file" 'job 1: map .*same.json is written by job 0 too' "$genbsp" batch "$work/batch/twice.json"

@@ -50,6 +50,8 @@ void render_option(std::vector<std::string>& args, std::string const& key, json 
   std::string name = key;
   std::replace(name.begin(), name.end(), '_', '-');
   std::string flag = "--" + name;
+  if (name == "help" || name == "h" || name == "version" || name == "help-all")
+    throw usage_error(where + "." + key + ": not a render option");
   if (name == "light" || name == "sun") { // repeatable points or directions
     json list = v.is_array() && !v.empty() && v[0].is_array() ? v : json::array({v});
     for (auto const& p : list) args.insert(args.end(), {flag, vector_text(p, 3, where + "." + key)});
@@ -77,6 +79,7 @@ void check_command(std::vector<std::string> const& args) {
   parse_only() = true;
   try {
     run(args);
+  } catch (options_checked const&) {
   } catch (...) {
     parse_only() = false;
     throw;
@@ -149,16 +152,21 @@ batch_plan plan_batch(json const& manifest, fs::path const& base, std::string co
     std::vector<std::string> viewpoint;
     if (!eye.empty()) viewpoint = {"--eye", eye};
     if (j.contains("view_dir")) viewpoint.insert(viewpoint.end(), {"--view-dir", vector_text(j["view_dir"], 3, where + ".view_dir")});
-    auto add = [&](std::string const& kind, std::vector<std::string> args) {
+    std::vector<std::string> places; // per command: where in the manifest it comes from
+    auto add = [&](std::string const& kind, std::vector<std::string> args, std::string const& place) {
       args.insert(args.begin(), "genbsp");
       p.commands.push_back(std::move(args));
       p.kinds.push_back(kind);
+      places.push_back(place);
+    };
+    auto claim = [&](std::string const& file, std::string const& what, bool surely = true) {
+      if (auto [at, fresh] = written.emplace(file, k); !fresh)
+        throw usage_error(where + ": " + what + " " + file + " is written by job " + std::to_string(at->second) + " too");
+      (surely ? p.outputs : p.possible).push_back(file);
     };
     auto output = [&](std::string const& path, std::string const& what) {
       auto r = resolve(path);
-      if (auto [at, fresh] = written.emplace(r, k); !fresh)
-        throw usage_error(where + ": " + what + " " + r + " is written by job " + std::to_string(at->second) + " too");
-      p.outputs.push_back(r);
+      claim(r, what);
       return r;
     };
     bool stats = flag("stats").value_or(false);
@@ -170,11 +178,11 @@ batch_plan plan_batch(json const& manifest, fs::path const& base, std::string co
       if (!j["map"].is_string()) throw usage_error(where + ".map: expected the output MAP.json's path");
       map_args.insert(map_args.end(), {"-o", output(j["map"].get<std::string>(), "map")});
       if (stats) map_args.push_back("--stats");
-      add("map", map_args);
+      add("map", map_args, where);
     } else if (stats) {
       map_args[0] = "stats";
       if (j.contains("up")) throw usage_error(where + ".up: for a map (with view_dir)");
-      add("stats", map_args);
+      add("stats", map_args, where);
     }
     if (j.contains("render")) {
       json renders = j["render"].is_array() ? j["render"] : json::array({j["render"]});
@@ -192,15 +200,27 @@ batch_plan plan_batch(json const& manifest, fs::path const& base, std::string co
             throw usage_error(rw + "." + key + ": set it on the job, not on its render");
           render_option(args, key, value, rw);
         }
-        args.insert(args.end(), {"-o", output(spec["output"].get<std::string>(), "image")});
-        add("render", std::move(args));
+        // Every file the render may write (a cube map's faces, split layers)
+        // is the job's: no other job may write it, and a failure removes it.
+        auto is = [&](char const* key, json const& value) {
+          std::string dashed = key;
+          std::replace(dashed.begin(), dashed.end(), '_', '-');
+          return (spec.contains(key) && spec[key] == value) || (spec.contains(dashed) && spec[dashed] == value);
+        };
+        bool cube = is("projection", "cube"), layers = is("split_layers", true);
+        auto image = resolve(spec["output"].get<std::string>());
+        auto files = render_files(image, cube, layers);
+        std::size_t views = cube ? cube_faces.size() : 1;
+        for (std::size_t f = 0; f < files.size(); ++f) claim(files[f], "image", f < views);
+        args.insert(args.end(), {"-o", image});
+        add("render", std::move(args), rw);
       }
     }
     if (p.commands.empty()) throw usage_error(where + ": asks for nothing (give stats, map or render)");
-    for (auto const& c : p.commands) try {
-        check_command(c);
+    for (std::size_t c = 0; c < p.commands.size(); ++c) try {
+        check_command(p.commands[c]);
       } catch (usage_error const& e) {
-        throw usage_error(where + ": " + e.what());
+        throw usage_error(places[c] + ": " + e.what());
       }
     plan.jobs.push_back(std::move(p));
   }
@@ -219,10 +239,11 @@ json run_batch(batch_plan const& plan, std::shared_ptr<scene_data const> const& 
   std::mutex lock; // guards the counters, `report` and the progress line
   std::size_t done = 0, failed = 0, bad_input = 0;
   bool tty = ::isatty(2) != 0;
+  bool report_progress = settings.progress.value_or(tty);
   int last_decile = -1;
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   auto show_progress = [&] {
-    if (!tty && !settings.progress) return;
+    if (!report_progress) return;
     double t = elapsed();
     if (tty) {
       double left = done ? t / static_cast<double>(done) * static_cast<double>(todo.size() - done) : 0;
@@ -275,12 +296,17 @@ json run_batch(batch_plan const& plan, std::shared_ptr<scene_data const> const& 
         // Whole or not at all: the files of the commands that had finished go too.
         std::error_code ec;
         for (auto const& f : job.outputs) fs::remove(f, ec);
+        for (auto const& f : job.possible) fs::remove(f, ec);
         result["ok"] = false;
         result["error"] = error;
         result["status"] = status;
       } else {
         result["ok"] = true;
-        result["outputs"] = job.outputs;
+        auto written = job.outputs;
+        std::error_code ec;
+        for (auto const& f : job.possible)
+          if (fs::exists(f, ec)) written.push_back(f);
+        result["outputs"] = written;
         if (!renders.empty()) result["render"] = std::move(renders);
       }
       result["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -318,7 +344,10 @@ int batch_job::run() const {
     text.assign(std::istreambuf_iterator<char>(std::cin), {});
   } else {
     std::ifstream in(manifest, std::ios::binary);
-    if (!in) throw usage_error(manifest + ": cannot open");
+    if (!in) {
+      int code = errno;
+      throw file_error(manifest + ": cannot open", code);
+    }
     text.assign(std::istreambuf_iterator<char>(in), {});
   }
   json m;
@@ -334,7 +363,7 @@ int batch_job::run() const {
   fs::path base = manifest == "-" ? fs::current_path() : fs::absolute(manifest).parent_path();
   batch_settings s;
   s.workers = workers;
-  s.progress = progress;
+  if (progress) s.progress = true;
   if (!shard.empty()) std::tie(s.shard, s.shards) = parse_shard(shard);
   auto plan = plan_batch(m, base, name);
   auto scene = read_scene_data(plan.scene);

@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,7 +23,8 @@ struct planned_job {
   nlohmann::ordered_json id;                   ///< the manifest's "id", or null
   std::vector<std::vector<std::string>> commands; ///< argument vectors, each starting "genbsp"
   std::vector<std::string> kinds;              ///< per command: "stats", "map" or "render"
-  std::vector<std::string> outputs;            ///< the files the job names (resolved)
+  std::vector<std::string> outputs;            ///< the files the job writes (resolved)
+  std::vector<std::string> possible;           ///< the files it writes if there is something to draw (split layers)
 };
 
 /// A manifest read and checked: the scene and the jobs.
@@ -43,7 +45,8 @@ struct batch_settings {
   unsigned workers = 0;      ///< threads; 0: one per core (never more than jobs)
   std::size_t shard = 0;     ///< run the jobs whose index is `shard` modulo `shards`
   std::size_t shards = 1;
-  bool progress = false;     ///< a progress line on standard error (always on a terminal)
+  /// A progress line on standard error: always, never, or (unset) on a terminal only.
+  std::optional<bool> progress;
 };
 
 /// Runs the plan's jobs of the shard on `scene` (read once by the caller),

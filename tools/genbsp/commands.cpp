@@ -6,6 +6,7 @@
 #include <geometry/io/polygons.hpp>
 #include <geometry/io/scene.hpp>
 #include <svm/camera.hpp>
+#include <svm/lines.hpp>
 #include <svm/parallel.hpp>
 #include <svm/query.hpp>
 #include <svm/render/cairo.hpp>
@@ -95,6 +96,8 @@ struct loaded {
 };
 
 loaded load(map_job const& job) {
+  if (!job.eye_text.empty()) parse_point(job.eye_text, "--eye");
+  if (parse_only()) throw options_checked{};
   auto d = scene_data_of(job.scene_path);
   return {d, d->prepared, d->scene.faces.size()};
 }
@@ -489,17 +492,25 @@ void write_drawing(svm::render::drawing const& d, std::string const& path, int d
                                                 : svm::render::cairo_format::png;
   std::filesystem::path target(path), tmp = target;
   tmp += ".tmp" + std::to_string(::getpid()) + ext;
+  {
+    // Made here first, so that a file that cannot be made is told by its cause.
+    std::ofstream probe(tmp, std::ios::binary);
+    if (!probe) {
+      int code = errno;
+      throw file_error(path + ": cannot write", code);
+    }
+  }
   try {
     svm::render::write_cairo(d, tmp.string(), f);
   } catch (std::runtime_error const& e) {
     std::filesystem::remove(tmp);
-    throw usage_error(path + ": cannot write (" + e.what() + ")");
+    throw file_error(path + ": cannot write (" + e.what() + ")", 0);
   }
   std::error_code ec;
   std::filesystem::rename(tmp, target, ec);
   if (ec) {
     std::filesystem::remove(tmp);
-    throw usage_error(path + ": " + ec.message());
+    throw file_error(path + ": " + ec.message(), ec.value());
   }
 }
 
@@ -636,6 +647,26 @@ std::string shadow_output(map_job const& job, std::vector<std::string> const& li
 } // namespace
 
 namespace genbsp_tool {
+
+std::string suffixed(std::string const& path, std::string_view what) {
+  std::filesystem::path p(path);
+  return (p.parent_path() / (p.stem().string() + "-" + std::string(what) + p.extension().string())).string();
+}
+
+std::vector<std::string> render_files(std::string const& out, bool cube, bool split_layers) {
+  std::vector<std::string> views;
+  if (cube)
+    for (auto face : cube_faces) views.push_back(suffixed(out, face));
+  else
+    views.push_back(out);
+  std::vector<std::string> files = views;
+  if (split_layers)
+    for (auto const& v : views)
+      for (char const* seen : {"visible-", "hidden-"})
+        for (std::size_t c = 0; c < svm::line_class_count; ++c)
+          files.push_back(suffixed(v, std::string(seen) + std::string(svm::name_of(static_cast<svm::line_class>(c)))));
+  return files;
+}
 
 std::shared_ptr<scene_data const> read_scene_data(std::string const& path, bool prepare) {
   auto d = std::make_shared<scene_data>();
@@ -809,7 +840,8 @@ int run(int argc, char** argv) {
     std::string what = e.what();
     throw usage_error(what.substr(0, what.find('\n')) + " (try --help)");
   }
-  if (parse_only()) return 0;
+  // map, stats and render check what they can before reading the scene (see `load`).
+  if (parse_only() && !*map && !*stats && !*render) return 0;
 
   if (*batch.command) {
     return batch.run();
@@ -820,9 +852,9 @@ int run(int argc, char** argv) {
   } else if (*cj.command) {
     cj.run();
   } else if (*map) {
-    auto l = load(mj);
     if (mj.eye_text.empty() == map_view_dir.empty()) throw usage_error("map: give --eye X,Y,Z or --view-dir DX,DY,DZ");
     if (!map_up.empty() && map_view_dir.empty()) throw usage_error("--up is for --view-dir");
+    auto l = load(mj);
     if (!map_view_dir.empty()) {
       auto polys = polygons_in<rational>(l);
       auto view = parallel_view(l, polys, map_view_dir, {});
@@ -837,10 +869,11 @@ int run(int argc, char** argv) {
     write_file(map_out, j.dump(1) + "\n");
     if (map_stats) out() << j["stats"].dump() << "\n";
   } else if (*stats) {
-    auto l = load(sj);
     if (sj.eye_text.empty() == stats_view_dir.empty()) throw usage_error("stats: give --eye X,Y,Z or --view-dir DX,DY,DZ");
+    if (!stats_view_dir.empty() && (!stats_lights.empty() || !stats_suns.empty()))
+      throw usage_error("--view-dir: no lights yet (render --projection orthographic has them)");
+    auto l = load(sj);
     if (!stats_view_dir.empty()) {
-      if (!stats_lights.empty() || !stats_suns.empty()) throw usage_error("--view-dir: no lights yet (render --projection orthographic has them)");
       auto polys = polygons_in<rational>(l);
       auto view = parallel_view(l, polys, stats_view_dir, {});
       out() << stats_json(svm::build<rational>(view.image(polys), view.eye(), parallel_options(sj)), l).dump() << "\n";
@@ -933,13 +966,6 @@ int run(int argc, char** argv) {
       }
       if (w < 1 || h < 1 || w > 20000 || h > 20000) throw usage_error("--size: each side must be 1 to 20000 pixels");
     }
-    auto l = load(rj);
-    auto scene_colours = [&] {
-      std::vector<std::optional<geometry::io::rgb>> c;
-      for (auto const& f : l.data->scene.faces) c.push_back(f.colour);
-      return c;
-    }();
-    auto infos = face_infos(l, scene_colours);
     bool const ortho = projection_name == "orthographic";
     if (!ortho && rj.eye_text.empty()) throw usage_error("--eye is required (except for --projection orthographic)");
     if (ortho && !rj.eye_text.empty() && look_text.empty())
@@ -947,6 +973,13 @@ int run(int argc, char** argv) {
     if (!ortho && !extent_text.empty()) throw usage_error("--extent is for --projection orthographic");
     if (ortho && !shift_text.empty()) throw usage_error("--shift is for perspective views");
     if (ortho && rj.number != "exact") throw usage_error("--projection orthographic: exact arithmetic only, for now");
+    auto l = load(rj);
+    auto scene_colours = [&] {
+      std::vector<std::optional<geometry::io::rgb>> c;
+      for (auto const& f : l.data->scene.faces) c.push_back(f.colour);
+      return c;
+    }();
+    auto infos = face_infos(l, scene_colours);
     auto [lo_q, hi_q, any] = exact_box(l);
     if (ortho && !any) throw usage_error(rj.scene_path + ": an orthographic view needs a scene with faces");
     std::optional<svm::view_from_infinity<rational>> parallel;
@@ -1062,17 +1095,12 @@ int run(int argc, char** argv) {
       svm::projector base(cam, svm::projection::perspective);
       auto f = base.forward(), r = base.right(), u = base.up();
       auto neg = [](svm::vec3 v) { return svm::detail::mul3(v, -1); };
-      std::filesystem::path out(render_out);
-      auto named = [&](std::string const& what) {
-        return (out.parent_path() / (out.stem().string() + "-" + what + out.extension().string())).string();
-      };
-      std::array<std::tuple<svm::vec3, svm::vec3, std::string>, 6> faces{
-          {{f, u, "front"}, {r, u, "right"}, {neg(f), u, "back"}, {neg(r), u, "left"}, {u, neg(f), "up"}, {neg(u), f, "down"}}};
-      for (auto const& [d, up, what] : faces) {
+      std::array<std::pair<svm::vec3, svm::vec3>, 6> faces{{{f, u}, {r, u}, {neg(f), u}, {neg(r), u}, {u, neg(f)}, {neg(u), f}}};
+      for (std::size_t k = 0; k < faces.size(); ++k) {
         svm::camera c = cam;
-        c.forward = d;
-        c.up = up;
-        views.push_back({c, named(what)});
+        c.forward = faces[k].first;
+        c.up = faces[k].second;
+        views.push_back({c, suffixed(render_out, cube_faces[k])});
       }
     } else {
       views.push_back({cam, render_out});
@@ -1125,11 +1153,7 @@ int run(int argc, char** argv) {
     std::vector<std::pair<svm::render::drawing, std::string>> layer_files;
     if (split_layers) {
       for (auto const& [d, path] : drawings)
-        for (std::size_t k = 0; k < d.layers.size(); ++k) {
-          std::filesystem::path p(path);
-          layer_files.push_back({svm::render::single_layer(d, k),
-                                 (p.parent_path() / (p.stem().string() + "-" + d.layers[k].name + p.extension().string())).string()});
-        }
+        for (std::size_t k = 0; k < d.layers.size(); ++k) layer_files.push_back({svm::render::single_layer(d, k), suffixed(path, d.layers[k].name)});
     }
     for (auto const& [d, path] : drawings) write_drawing(d, path, digits);
     for (auto const& [d, path] : layer_files) write_drawing(d, path, digits);

@@ -7,8 +7,10 @@
 #include <geometry/io/scene.hpp>
 #include <svm/build.hpp>
 
+#include <array>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace genbsp_tool {
@@ -66,6 +68,19 @@ std::string map_json_text(svm::visibility_map<geometry::rational> const& vm, geo
                           std::shared_ptr<scene_data const> const& scene);
 std::string map_json_text(svm::visibility_map<double> const& vm, geometry::e3::point<geometry::rational> const& eye,
                           std::shared_ptr<scene_data const> const& scene);
+
+/// `path` with `-what` before its extension: where `genbsp render` writes a
+/// cube map's face ("out-front.svg") or one layer ("out-visible-outline.svg").
+std::string suffixed(std::string const& path, std::string_view what);
+
+/// The faces of a cube map, in the order `genbsp render` draws them.
+inline constexpr std::array<std::string_view, 6> cube_faces{"front", "right", "back", "left", "up", "down"};
+
+/// Every file `genbsp render -o OUT` may write: first the views it always
+/// writes (OUT, or a cube map's six faces); then, with `--split-layers`, each
+/// of those with each layer a line drawing can have (only the layers with
+/// lines are written).
+std::vector<std::string> render_files(std::string const& out, bool cube, bool split_layers);
 
 /// Runs the command line `argv` (`argv[0]` the program's name): its exit
 /// status; bad input throws `usage_error` or `geometry::io::read_error`.
