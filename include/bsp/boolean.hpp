@@ -19,10 +19,13 @@
 
 namespace bsp {
 
-/// Merges two labellings of the same space: each point gets `op(a(p), b(p))`.
+/// `merge` before its result is reduced: every node of `a` that cuts the
+/// region, then under each leaf of `a` the nodes of `b` that cut that leaf's
+/// cell, added to the result in the order the merge decides them (so that
+/// `bsp::cells_after` replays it step by step).
 template <geometry G, label LA, label LB, class Op, class R = std::invoke_result_t<Op&, LA const&, LB const&>>
   requires label<R>
-point_set<G, R> merge(point_set<G, LA> const& a, point_set<G, LB> const& b, Op op) {
+point_set<G, R> merge_unreduced(point_set<G, LA> const& a, point_set<G, LB> const& b, Op op) {
   using P = typename G::polytope;
   point_set<G, R> out;
   // Work items: a node of `a` with its cell, or a node of `b` inside the cell
@@ -73,7 +76,14 @@ point_set<G, R> merge(point_set<G, LA> const& a, point_set<G, LB> const& b, Op o
     stack.push_back({w.in_b, neg, std::move(*r.negative), n, -1, w.la});
     stack.push_back({w.in_b, pos, std::move(*r.positive), n, +1, std::move(w.la)});
   }
-  return reduce(out);
+  return out;
+}
+
+/// Merges two labellings of the same space: each point gets `op(a(p), b(p))`.
+template <geometry G, label LA, label LB, class Op, class R = std::invoke_result_t<Op&, LA const&, LB const&>>
+  requires label<R>
+point_set<G, R> merge(point_set<G, LA> const& a, point_set<G, LB> const& b, Op op) {
+  return reduce(merge_unreduced(a, b, op));
 }
 
 namespace detail {

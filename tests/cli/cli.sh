@@ -567,8 +567,88 @@ expect_error "batch: a bad shard" '--shard: expected 0 <= I < N' "$genbsp" batch
 echo '{"scene": "nothere.off", "jobs": [{"eye": [0, 0, 0], "stats": true}]}' >"$work/batch/missing.json"
 expect_error "batch: a missing scene" 'nothere.off' "$genbsp" batch "$work/batch/missing.json"
 
-for sub in map locate stats scene render view shadow bool csg visibility2d batch; do
-  "$genbsp" "$sub" --help >"$work/help" 2>&1
+# explain: the steps of building and merging, each a picture and a trace entry; the
+# last picture's cells are the library's direct result.
+mkdir -p "$work/explain"
+cat >"$work/explain/a.wkt" <<'WKT'
+POLYGON((0 0, 4 0, 4 3, 0 3, 0 0), (1 1, 1 2, 2 2, 2 1, 1 1))
+WKT
+echo 'POLYGON((2 -1, 6 1, 3 5, 2 -1))' >"$work/explain/b.wkt"
+printf '0 1\n2 3.5  # a comment\n5 6\n' >"$work/explain/a.e1"
+printf '0.5 2.5\n' >"$work/explain/b.e1"
+printf '1,0 0,1\n-1,0 0,-1\n' >"$work/explain/a.s1"
+printf '1,1 -1,1\n' >"$work/explain/b.s1"
+ex="$work/explain"
+quiet "$genbsp" explain build "$ex/a.wkt" -o "$ex/build-e2"
+check "explain build e2: exit status 0" test $? -eq 0
+quiet "$genbsp" explain merge "$ex/a.wkt" "$ex/b.wkt" --op difference -o "$ex/merge-e2"
+"$genbsp" bool "$ex/a.wkt" "$ex/b.wkt" --op difference -o "$ex/difference.wkt" >"$ex/difference.json"
+"$genbsp" bool "$ex/a.wkt" "$ex/a.wkt" --op union -o "$ex/same.wkt" >"$ex/same.json"
+quiet "$genbsp" explain build "$ex/a.e1" -o "$ex/build-e1"
+quiet "$genbsp" explain merge "$ex/a.e1" "$ex/b.e1" --op xor -o "$ex/merge-e1"
+quiet "$genbsp" explain build "$ex/a.s1" -o "$ex/build-s1"
+quiet "$genbsp" explain merge "$ex/a.s1" "$ex/b.s1" -o "$ex/merge-s1"
+check "explain: steps, pictures and trace agree; the last step is the library's result" python3 - "$ex" <<'PY'
+import json, math, os, sys
+import xml.etree.ElementTree as ET
+from fractions import Fraction
+d = sys.argv[1]
+def inside(step, key):
+    return sum(Fraction(c[key]) if isinstance(c[key], str) else c[key] for c in step["cells"] if c["label"] is True)
+for run in ("build-e2", "merge-e2", "build-e1", "merge-e1", "build-s1", "merge-s1"):
+    folder = os.path.join(d, run)
+    trace = json.load(open(os.path.join(folder, "trace.json")))
+    pictures = sorted(f for f in os.listdir(folder) if f.startswith("step-"))
+    steps = trace["steps"]
+    assert len(pictures) == len(steps) and [s["picture"] for s in steps] == pictures, run
+    assert [s["step"] for s in steps] == list(range(len(steps))), run
+    html = open(os.path.join(folder, "index.html")).read()
+    assert all(p in html for p in pictures), run
+    for s in steps:
+        svg = ET.parse(os.path.join(folder, s["picture"])).getroot()   # well-formed, or this raises
+        drawn = sorted((e.get("data-cell"), e.get("data-label")) for e in svg.iter() if e.get("data-cell"))
+        listed = sorted((c["node"], "pending" if c["pending"] else ("in" if c["label"] else "out")) for c in s["cells"])
+        assert drawn == listed, (run, s["step"])
+    last = steps[-1]
+    assert not any(c["pending"] for c in last["cells"]), run
+    assert len(last["cells"]) == trace["result"]["cells"], run
+    if run.startswith("build"):
+        assert steps[0]["operation"] == "start" and len(steps[0]["cells"]) == 1 and steps[0]["cells"][0]["pending"], run
+        assert len(steps) == trace["result"]["interior_nodes"] + 1, run
+        for k, s in enumerate(steps[1:]):
+            assert s["operation"] == "split" and s["node"] == f"node {k}", run
+    else:
+        assert [s["phase"] for s in steps[:2]] == ["a", "b"] and steps[-1]["phase"] == "reduce", run
+def area(summary):
+    return Fraction(json.load(open(os.path.join(d, summary)))["area_exact"])
+t = lambda run: json.load(open(os.path.join(d, run, "trace.json")))["steps"][-1]
+assert inside(t("build-e2"), "area") == area("same.json") == 11
+assert inside(t("merge-e2"), "area") == area("difference.json") == Fraction(25, 4)
+assert inside(t("build-e1"), "length") == Fraction(7, 2)
+assert inside(t("merge-e1"), "length") == Fraction(7, 2)   # [0,.5] [1,2] [2.5,3.5] [5,6]
+assert abs(inside(t("build-s1"), "length") - math.pi) < 1e-12
+assert abs(inside(t("merge-s1"), "length") - 5 * math.pi / 4) < 1e-12
+PY
+quiet "$genbsp" explain build "$ex/a.e1" -o "$ex/build-e2"
+check "explain: a second run replaces the earlier pictures" test "$(ls "$ex/build-e2" | grep -c '^step-')" -eq 7
+python3 -c "
+import math
+n = 201
+print('POLYGON((' + ', '.join(f'{math.cos(2*math.pi*k/n):.6f} {math.sin(2*math.pi*k/n):.6f}' for k in list(range(n)) + [0]) + '))')" >"$ex/big.wkt"
+expect_error "explain: too many hyperplanes" 'big.wkt: 201 boundary pieces; explain draws at most 200' "$genbsp" explain build "$ex/big.wkt" -o "$ex/big"
+check "explain: nothing written for a refused input" test ! -e "$ex/big"
+printf '0 1\n0.5 2\n' >"$ex/overlap.e1"
+expect_error "explain: overlapping intervals" 'overlap.e1: the intervals overlap' "$genbsp" explain build "$ex/overlap.e1" -o "$ex/o"
+printf '0 1\n2 x\n' >"$ex/bad.e1"
+expect_error "explain: a bad number, with its line" 'bad.e1:2: not a number' "$genbsp" explain build "$ex/bad.e1" -o "$ex/o"
+printf '1,0 2,0\n' >"$ex/same.s1"
+expect_error "explain: an arc between one direction" 'same.s1:1: the two directions are the same' "$genbsp" explain build "$ex/same.s1" -o "$ex/o"
+expect_error "explain: an unknown extension" "cannot tell the geometry from '.json'" "$genbsp" explain build "$ex/same.json" -o "$ex/o"
+expect_error "explain: operands of two geometries" 'different geometries' "$genbsp" explain merge "$ex/a.e1" "$ex/a.wkt" -o "$ex/o"
+expect_error "explain: a missing subcommand" 'subcommand' "$genbsp" explain "$ex/a.e1" -o "$ex/o"
+
+for sub in map locate stats scene render view shadow bool csg visibility2d batch explain "explain build" "explain merge"; do
+  "$genbsp" $sub --help >"$work/help" 2>&1
   check "$sub --help exits 0" test $? -eq 0
   check "$sub --help says what it does" grep -q "Usage" "$work/help"
 done

@@ -22,6 +22,7 @@
 #include "boolean.hpp"
 #include "commands.hpp"
 #include "visibility2d.hpp"
+#include "explain.hpp"
 #include "common.hpp"
 #include "viewer_html.hpp"
 
@@ -827,6 +828,8 @@ int run(int argc, char** argv) {
   cj.add_to(app);
   batch_job batch;
   batch.add_to(app);
+  explain_job ej;
+  ej.add_to(app);
 
   try {
     app.parse(argc, argv);
@@ -843,7 +846,9 @@ int run(int argc, char** argv) {
   // map, stats and render check what they can before reading the scene (see `load`).
   if (parse_only() && !*map && !*stats && !*render) return 0;
 
-  if (*batch.command) {
+  if (*ej.command) {
+    ej.run();
+  } else if (*batch.command) {
     return batch.run();
   } else if (*v2j.command) {
     v2j.run();

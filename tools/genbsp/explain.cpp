@@ -1,0 +1,582 @@
+// genbsp explain: an algorithm of the generic tree, step by step, on a small
+// input of the user's: numbered SVG pictures, an index.html that steps
+// through them with the keyboard, and a JSON trace.  The steps are read from
+// the finished trees (bsp/explain.hpp), so the pictures show what the library
+// computed, not a re-enactment of it.
+#include "explain.hpp"
+#include "common.hpp"
+
+#include <boolean/polygons.hpp>
+#include <bsp/explain.hpp>
+#include <geometry/e1.hpp>
+#include <geometry/e2/svg.hpp>
+#include <geometry/io/geojson.hpp>
+#include <geometry/io/wkt.hpp>
+#include <geometry/s1.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <numbers>
+#include <sstream>
+
+namespace genbsp_tool {
+
+namespace {
+
+namespace fs = std::filesystem;
+using json = nlohmann::ordered_json;
+
+/// Pictures with more hyperplanes than this are not readable.
+constexpr std::size_t most_pieces = 200;
+
+std::string fmt(double x) {
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(2) << x;
+  return s.str();
+}
+
+std::string node_name(bsp::node_id n) { return (n.is_leaf() ? "leaf " : "node ") + std::to_string(n.index()); }
+
+/// A signed term of a linear form, e.g. " - 2y", for the hyperplanes' text.
+std::string linear_text(std::vector<std::pair<rational, std::string>> const& terms) {
+  std::string s;
+  for (auto const& [c, v] : terms) {
+    if (c == 0) continue;
+    rational a = c < 0 ? rational(-c) : c;
+    std::string num = (a == 1 && !v.empty()) ? "" : exact_text(a);
+    if (s.empty())
+      s = (c < 0 ? "-" : "") + num + v;
+    else
+      s += (c < 0 ? " - " : " + ") + num + v;
+  }
+  return (s.empty() ? "0" : s) + " = 0";
+}
+
+// --- The geometries: reading an input, naming a hyperplane, drawing -------
+
+/// Calls `f(first, second, where)` for each line of `file` that holds two
+/// words ('#' starts a comment; blank lines are skipped); `form` names the
+/// line's form in the error for any other line.
+template <class F> void for_each_pair(std::string const& file, std::string const& form, F f) {
+  std::ifstream in(file);
+  if (!in) throw file_error(file + ": cannot open", errno);
+  std::string line;
+  for (std::size_t number = 1; std::getline(in, line); ++number) {
+    if (auto hash = line.find('#'); hash != std::string::npos) line.erase(hash);
+    std::istringstream s(line);
+    std::string a, b, extra;
+    if (!(s >> a)) continue;
+    std::string where = file + ":" + std::to_string(number);
+    if (!(s >> b) || (s >> extra)) throw usage_error(where + ": expected " + form);
+    f(a, b, where);
+  }
+}
+
+/// Colours of a cell: inside, outside, still to be built.
+char const* fill_of(std::optional<bool> label) { return !label ? "#d9d9d9" : *label ? "#7fb2e5" : "#ffffff"; }
+
+/// E1: intervals of the line.
+struct line_geometry {
+  using G = geometry::e1::exact_kernel;
+  static constexpr char const* name = "e1";
+  double lo = 0, hi = 1;
+  static constexpr double width = 640, height = 150, margin = 30;
+  std::vector<std::pair<rational, rational>> input;
+
+  double X(double x) const { return margin + (x - lo) / (hi - lo) * (width - 2 * margin); }
+
+  std::vector<G::sub_hyperplane> read(std::string const& file) {
+    std::vector<G::sub_hyperplane> out;
+    rational total(0);
+    for_each_pair(file, "an interval 'A B'", [&](std::string const& a, std::string const& b, std::string const& where) {
+      rational x, y;
+      try {
+        x = geometry::parse_number<rational>(a), y = geometry::parse_number<rational>(b);
+      } catch (geometry::parse_error const& e) {
+        throw usage_error(where + ": " + e.what());
+      }
+      if (!(x < y)) throw usage_error(where + ": an interval 'A B' needs A < B");
+      input.emplace_back(x, y);
+      total += y - x;
+      out.push_back({geometry::e1::hyperplane_at(x, false)});
+      out.push_back({geometry::e1::hyperplane_at(y, true)});
+    });
+    if (input.empty()) throw usage_error(file + ": no interval");
+    double a = input.front().first.convert_to<double>(), b = a;
+    for (auto const& [x, y] : input) a = std::min(a, x.convert_to<double>()), b = std::max(b, y.convert_to<double>());
+    double pad = std::max((b - a) * 0.15, 0.5);
+    lo = a - pad, hi = b + pad;
+    auto t = bsp::build_point_set<G>(out);
+    if (auto m = bsp::measure(t, true); !m || *m != total) throw usage_error(file + ": the intervals overlap");
+    return out;
+  }
+  std::string text(G::hyperplane const& h) const {
+    rational at = -h.n[1] / h.n[0];
+    return "x = " + exact_text(at) + (h.n[0] > 0 ? " (positive side above)" : " (positive side below)");
+  }
+  std::string short_text(G::hyperplane const& h) const { return "x = " + exact_text(rational(-h.n[1] / h.n[0])); }
+  json region(G::polytope const& c) const {
+    auto [a, b] = geometry::e1::ends(c);
+    auto len = geometry::e1::length(c);
+    return {{"from", a ? json(exact_text(*a)) : json(nullptr)}, {"to", b ? json(exact_text(*b)) : json(nullptr)},
+            {"length", len ? json(exact_text(*len)) : json(nullptr)}};
+  }
+  void add(line_geometry const& o) { input.insert(input.end(), o.input.begin(), o.input.end()); }
+  void draw_input(std::ostream& o) const {
+    for (auto const& [a, b] : input)
+      o << "<line stroke=\"#1f4e99\" stroke-width=\"3\" x1=\"" << fmt(X(a.convert_to<double>())) << "\" y1=\"105\" x2=\""
+        << fmt(X(b.convert_to<double>())) << "\" y2=\"105\"/>\n";
+  }
+  void draw_cell(std::ostream& o, G::polytope const& c, std::optional<bool> label, std::string const& name) const {
+    auto [a, b] = geometry::e1::ends(c);
+    double x0 = a ? X(a->convert_to<double>()) : 0, x1 = b ? X(b->convert_to<double>()) : width;
+    o << "<rect data-cell=\"" << name << "\" data-label=\"" << (label ? (*label ? "in" : "out") : "pending") << "\" fill=\""
+      << fill_of(label) << "\" stroke=\"#555\" x=\"" << fmt(x0) << "\" y=\"60\" width=\"" << fmt(std::max(x1 - x0, 0.0))
+      << "\" height=\"30\"/>\n";
+  }
+  void draw_split(std::ostream& o, G::hyperplane const& h, G::polytope const&, long number, bool newest) const {
+    double x = X((-h.n[1] / h.n[0]).convert_to<double>());
+    o << "<line stroke=\"" << (newest ? "#d62728" : "black") << "\" stroke-width=\"" << (newest ? 3 : 1.5) << "\" x1=\"" << fmt(x)
+      << "\" y1=\"50\" x2=\"" << fmt(x) << "\" y2=\"100\"/>\n<text font-size=\"12\" text-anchor=\"middle\" x=\"" << fmt(x)
+      << "\" y=\"45\">" << (number >= 0 ? std::to_string(number) : "") << "</text>\n";
+  }
+};
+
+/// S1: arcs of the circle of directions.
+struct circle_geometry {
+  using G = geometry::s1::exact_kernel;
+  using D = geometry::s1::point<rational>;
+  static constexpr char const* name = "s1";
+  static constexpr double width = 420, height = 420, cx = 210, cy = 225, r = 150;
+  std::vector<std::pair<D, D>> input;
+
+  static double angle(D const& d) { return std::atan2(d[1].convert_to<double>(), d[0].convert_to<double>()); }
+  /// The arc from angle a counter-clockwise to b as an SVG path at radius `radius`.
+  static std::string arc_path(double a, double b, double radius) {
+    double sweep = b - a;
+    while (sweep <= 0) sweep += 2 * std::numbers::pi;
+    if (sweep >= 2 * std::numbers::pi - 1e-12) { // the whole circle: two halves
+      return "M " + fmt(cx + radius) + " " + fmt(cy) + " A " + fmt(radius) + " " + fmt(radius) + " 0 1 0 " + fmt(cx - radius) + " " +
+             fmt(cy) + " A " + fmt(radius) + " " + fmt(radius) + " 0 1 0 " + fmt(cx + radius) + " " + fmt(cy);
+    }
+    auto px = [&](double t) { return fmt(cx + radius * std::cos(t)); };
+    auto py = [&](double t) { return fmt(cy - radius * std::sin(t)); };
+    // Counter-clockwise in the plane is clockwise on the page (y down): sweep flag 0.
+    return "M " + px(a) + " " + py(a) + " A " + fmt(radius) + " " + fmt(radius) + " 0 " + (sweep > std::numbers::pi ? "1" : "0") +
+           " 0 " + px(a + sweep) + " " + py(a + sweep);
+  }
+
+  std::vector<G::sub_hyperplane> read(std::string const& file) {
+    std::vector<G::sub_hyperplane> out;
+    double total = 0;
+    auto arc = [&](std::string const& a, std::string const& b, std::string const& where) {
+      auto dir = [&](std::string const& t) {
+        auto comma = t.find(',');
+        if (comma == std::string::npos) throw usage_error(where + ": expected a direction X,Y, got '" + t + "'");
+        try {
+          D d(std::array<rational, 2>{geometry::parse_number<rational>(t.substr(0, comma)), geometry::parse_number<rational>(t.substr(comma + 1))});
+          if (d[0] == 0 && d[1] == 0) throw usage_error(where + ": the zero vector is no direction");
+          return d;
+        } catch (geometry::parse_error const& e) {
+          throw usage_error(where + ": " + e.what());
+        }
+      };
+      D p = dir(a), q = dir(b);
+      if (p[0] * q[1] - p[1] * q[0] == 0 && p[0] * q[0] + p[1] * q[1] > 0)
+        throw usage_error(where + ": the two directions are the same (no arc, or the whole circle)");
+      input.emplace_back(p, q);
+      double sweep = angle(q) - angle(p);
+      while (sweep <= 0) sweep += 2 * std::numbers::pi;
+      total += sweep;
+      out.push_back(geometry::s1::opposite(G::sub_hyperplane{geometry::s1::hyperplane_at(p), true, false}));
+      out.push_back(G::sub_hyperplane{geometry::s1::hyperplane_at(q), true, false});
+    };
+    for_each_pair(file, "an arc 'X1,Y1 X2,Y2' (counter-clockwise from the first direction)", arc);
+    if (input.empty()) throw usage_error(file + ": no arc");
+    auto t = bsp::build_point_set<G>(out);
+    if (std::abs(bsp::measure(t, true) - total) > 1e-9) throw usage_error(file + ": the arcs overlap");
+    return out;
+  }
+  std::string text(G::hyperplane const& h) const {
+    auto s = geometry::s1::start_point(h);
+    return "directions ±(" + exact_text(s[0]) + ", " + exact_text(s[1]) + "), positive side counter-clockwise from (" + exact_text(s[0]) +
+           ", " + exact_text(s[1]) + ")";
+  }
+  std::string short_text(G::hyperplane const& h) const {
+    auto s = geometry::s1::start_point(h);
+    return "the directions ±(" + exact_text(s[0]) + ", " + exact_text(s[1]) + ")";
+  }
+  json region(G::polytope const& c) const {
+    auto e = geometry::s1::endpoints(c);
+    auto d = [](D const& p) { return json::array({exact_text(p[0]), exact_text(p[1])}); };
+    json j{{"from", e.empty() ? json(nullptr) : d(e[0])}, {"to", e.empty() ? json(nullptr) : d(e[1])}};
+    j["length"] = geometry::s1::length(c);
+    return j;
+  }
+  void add(circle_geometry const& o) { input.insert(input.end(), o.input.begin(), o.input.end()); }
+  void draw_input(std::ostream& o) const {
+    o << "<circle cx=\"" << cx << "\" cy=\"" << cy << "\" r=\"" << r << "\" fill=\"none\" stroke=\"#999\"/>\n";
+    for (auto const& [p, q] : input)
+      o << "<path fill=\"none\" stroke=\"#1f4e99\" stroke-width=\"3\" d=\"" << arc_path(angle(p), angle(q), r - 22) << "\"/>\n";
+  }
+  void draw_cell(std::ostream& o, G::polytope const& c, std::optional<bool> label, std::string const& name) const {
+    auto e = geometry::s1::endpoints(c);
+    double a = e.empty() ? 0 : angle(e[0]), b = e.empty() ? 2 * std::numbers::pi : angle(e[1]);
+    if (c.bounds.size() == 1) b = a + std::numbers::pi;
+    o << "<path data-cell=\"" << name << "\" data-label=\"" << (label ? (*label ? "in" : "out") : "pending")
+      << "\" fill=\"none\" stroke=\"" << (label && !*label ? "#eeeeee" : fill_of(label)) << "\" stroke-width=\"16\" d=\""
+      << arc_path(a, e.empty() ? a + 2 * std::numbers::pi : b, r) << "\"/>\n";
+  }
+  void draw_split(std::ostream& o, G::hyperplane const& h, G::polytope const&, long number, bool newest) const {
+    double t = angle(geometry::s1::start_point(h));
+    double x0 = cx + (r + 12) * std::cos(t), y0 = cy - (r + 12) * std::sin(t);
+    double x1 = cx - (r + 12) * std::cos(t), y1 = cy + (r + 12) * std::sin(t);
+    o << "<line stroke=\"" << (newest ? "#d62728" : "black") << "\" stroke-width=\"" << (newest ? 2.5 : 1) << "\" stroke-dasharray=\"6 4\" x1=\""
+      << fmt(x0) << "\" y1=\"" << fmt(y0) << "\" x2=\"" << fmt(x1) << "\" y2=\"" << fmt(y1) << "\"/>\n<text font-size=\"12\" x=\""
+      << fmt(cx + (r + 26) * std::cos(t) - 4) << "\" y=\"" << fmt(cy - (r + 26) * std::sin(t) + 4) << "\">" << (number >= 0 ? std::to_string(number) : "")
+      << "</text>\n";
+  }
+};
+
+/// E2: polygons with holes (WKT or GeoJSON).
+struct plane_geometry {
+  using G = boolean::plane_kernel;
+  static constexpr char const* name = "e2";
+  geometry::e2::svg_view view;
+  static constexpr double pixels = 480;
+  double width = pixels, height = pixels;
+  std::vector<G::sub_hyperplane> edges;
+
+  double X(double x) const { return (x - view.x0) / (view.x1 - view.x0) * width; }
+  double Y(double y) const { return height - (y - view.y0) / (view.y1 - view.y0) * height; }
+
+  std::vector<G::sub_hyperplane> read(std::string const& file) {
+    auto m = geometry::io::read_polygons(file);
+    try {
+      auto op = boolean::operand_of(m);
+      edges = op.boundary;
+    } catch (boolean::invalid_polygon const& e) {
+      throw usage_error(file + ": " + e.what());
+    }
+    if (edges.empty()) throw usage_error(file + ": no polygon with an area");
+    double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    bool first = true;
+    for (auto const& p : m)
+      for (auto const& v : p.outer) {
+        double x = v.x().convert_to<double>(), y = v.y().convert_to<double>();
+        if (first) x0 = x1 = x, y0 = y1 = y, first = false;
+        x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+      }
+    double pad = std::max(std::max(x1 - x0, y1 - y0) * 0.15, 0.5);
+    view = {x0 - pad, y0 - pad, x1 + pad, y1 + pad, pixels};
+    height = pixels * (view.y1 - view.y0) / (view.x1 - view.x0);
+    return edges;
+  }
+  /// The tree the library builds for the polygons (the order its Boolean operations use).
+  static bsp::point_set<G, bool> tree_of(std::vector<G::sub_hyperplane> const& e) {
+    return bsp::build_point_set<G>(e, true, false, bsp::random_order(20261128));
+  }
+  std::string text(G::hyperplane const& h) const {
+    return linear_text({{h.n[0], "x"}, {h.n[1], "y"}, {h.n[2], ""}}) + " (positive side where the left side is > 0)";
+  }
+  std::string short_text(G::hyperplane const& h) const { return linear_text({{h.n[0], "x"}, {h.n[1], "y"}, {h.n[2], ""}}); }
+  json region(G::polytope const& c) const {
+    json j;
+    auto v = geometry::e2::vertices(c);
+    if (v) {
+      json pts = json::array();
+      for (auto const& p : *v) pts.push_back(json::array({exact_text(p.x()), exact_text(p.y())}));
+      j["vertices"] = pts;
+    } else {
+      j["vertices"] = nullptr; // unbounded
+    }
+    auto a = geometry::e2::area(c);
+    j["area"] = a ? json(exact_text(*a)) : json(nullptr);
+    return j;
+  }
+  void add(plane_geometry const& o) { edges.insert(edges.end(), o.edges.begin(), o.edges.end()); }
+  void draw_input(std::ostream& o) const {
+    for (auto const& s : edges)
+      if (auto e = geometry::e2::endpoints(s))
+        o << "<line stroke=\"#1f4e99\" stroke-width=\"3\" stroke-opacity=\"0.55\" x1=\"" << fmt(X(geometry::to_double(e->first.x())))
+          << "\" y1=\"" << fmt(Y(geometry::to_double(e->first.y()))) << "\" x2=\"" << fmt(X(geometry::to_double(e->second.x())))
+          << "\" y2=\"" << fmt(Y(geometry::to_double(e->second.y()))) << "\"/>\n";
+  }
+  void draw_cell(std::ostream& o, G::polytope const& c, std::optional<bool> label, std::string const& name) const {
+    auto v = geometry::e2::vertices(geometry::e2::detail::clip_to(c, view));
+    o << "<polygon data-cell=\"" << name << "\" data-label=\"" << (label ? (*label ? "in" : "out") : "pending") << "\" fill=\""
+      << fill_of(label) << "\" stroke=\"#bbb\" stroke-width=\"0.5\" points=\"";
+    if (v)
+      for (auto const& p : *v) o << fmt(X(geometry::to_double(p.x()))) << ',' << fmt(Y(geometry::to_double(p.y()))) << ' ';
+    o << "\"/>\n";
+  }
+  void draw_split(std::ostream& o, G::hyperplane const& h, G::polytope const& cell, long number, bool newest) const {
+    auto c = geometry::e2::detail::clip_to(cell, view);
+    std::optional<G::sub_hyperplane> s = geometry::e2::whole_line(h);
+    for (auto const& b : c.bounds) {
+      if (!s) break;
+      auto r = geometry::e2::split(*s, b);
+      s = r.is_coincident() ? std::nullopt : r.positive;
+    }
+    if (!s) return;
+    auto e = geometry::e2::endpoints(*s);
+    if (!e) return;
+    double ax = X(geometry::to_double(e->first.x())), ay = Y(geometry::to_double(e->first.y()));
+    double bx = X(geometry::to_double(e->second.x())), by = Y(geometry::to_double(e->second.y()));
+    o << "<line stroke=\"" << (newest ? "#d62728" : "black") << "\" stroke-width=\"" << (newest ? 3 : 1.5) << "\" x1=\"" << fmt(ax)
+      << "\" y1=\"" << fmt(ay) << "\" x2=\"" << fmt(bx) << "\" y2=\"" << fmt(by) << "\"/>\n<text font-size=\"12\" x=\""
+      << fmt((ax + bx) / 2 + 3) << "\" y=\"" << fmt((ay + by) / 2 - 3) << "\">" << (number >= 0 ? std::to_string(number) : "")
+      << "</text>\n";
+  }
+};
+
+std::string html_escape(std::string const& s) {
+  std::string o;
+  for (char c : s) {
+    if (c == '<') o += "&lt;";
+    else if (c == '>') o += "&gt;";
+    else if (c == '&') o += "&amp;";
+    else if (c == '"') o += "&quot;";
+    else o += c;
+  }
+  return o;
+}
+
+// --- Steps ---------------------------------------------------------------
+
+struct step {
+  json trace;
+  std::string svg;
+};
+
+/// The picture and trace entry of tree `t` after `placed` of its nodes.
+template <class Geo>
+step picture(Geo const& geo, bsp::point_set<typename Geo::G, bool> const& t, std::size_t placed, bool replaying, bool show_input,
+             std::string const& caption) {
+  auto state = bsp::state_after(t, placed);
+  std::ostringstream o;
+  double w = geo.width, h = geo.height + 28;
+  o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << fmt(w) << "\" height=\"" << fmt(h) << "\" viewBox=\"0 0 " << fmt(w) << ' '
+    << fmt(h) << "\" font-family=\"sans-serif\">\n<title>" << html_escape(caption) << "</title>\n<g transform=\"translate(0,28)\">\n";
+  json cells = json::array();
+  for (auto const& c : state.cells) {
+    std::optional<bool> label;
+    if (!c.pending) label = t.leaf_data(c.node);
+    geo.draw_cell(o, c.region, label, node_name(c.node));
+    json j{{"node", node_name(c.node)}, {"label", label ? json(*label) : json(nullptr)}, {"pending", c.pending}};
+    j.update(geo.region(c.region));
+    cells.push_back(std::move(j));
+  }
+  if (show_input) geo.draw_input(o);
+  // While replaying, nodes are numbered in the order they were placed, the newest in red.
+  for (auto const& [n, cell] : state.splits)
+    geo.draw_split(o, t.splitter(n), cell, replaying ? static_cast<long>(n.index()) : -1, replaying && n.index() + 1 == placed);
+  o << "</g>\n<text font-size=\"12\" x=\"6\" y=\"18\">" << html_escape(caption) << "</text>\n</svg>\n";
+  return {json{{"cells", std::move(cells)}}, o.str()};
+}
+
+/// Every step of the tree `t`'s making: the whole space, then one node at a time.
+template <class Geo>
+void replay(Geo const& geo, bsp::point_set<typename Geo::G, bool> const& t, std::string const& phase, bool show_input,
+            std::vector<step>& out) {
+  auto places = bsp::interior_places(t);
+  for (std::size_t k = 0; k <= t.interior_count(); ++k) {
+    std::string caption;
+    json head{{"phase", phase}};
+    if (k == 0) {
+      caption = phase + ": the whole " + (std::string(Geo::name) == "e1" ? "line" : std::string(Geo::name) == "s1" ? "circle" : "plane") +
+                ", one cell to build";
+      head["operation"] = "start";
+    } else {
+      auto n = bsp::node_id::interior(static_cast<std::uint32_t>(k - 1));
+      auto const& p = places[k - 1];
+      head["operation"] = "split";
+      head["node"] = node_name(n);
+      head["parent"] = p.parent.valid() ? json(node_name(p.parent)) : json(nullptr);
+      head["side"] = p.side;
+      head["depth"] = p.depth;
+      head["hyperplane"] = geo.text(t.splitter(n));
+      caption = phase + ", step " + std::to_string(k) + ": node " + std::to_string(k - 1) + " splits its cell by " + geo.short_text(t.splitter(n));
+    }
+    auto s = picture(geo, t, k, true, show_input, caption);
+    head.update(s.trace);
+    head["caption"] = caption;
+    out.push_back({std::move(head), std::move(s.svg)});
+  }
+}
+
+/// One picture of a finished tree.
+template <class Geo>
+void whole(Geo const& geo, bsp::point_set<typename Geo::G, bool> const& t, std::string const& phase, std::string const& operation,
+           std::string const& caption, std::vector<step>& out) {
+  auto s = picture(geo, t, t.interior_count(), false, true, caption);
+  json head{{"phase", phase}, {"operation", operation}};
+  head.update(s.trace);
+  head["caption"] = caption;
+  out.push_back({std::move(head), std::move(s.svg)});
+}
+
+/// The page that steps through the pictures (← and →, Home and End).
+std::string index_html(std::vector<std::string> const& files, std::vector<std::string> const& captions, std::string const& title) {
+  json f = files, c = captions;
+  // "</" would end the script element early.
+  auto safe = [](std::string s) {
+    for (std::size_t i; (i = s.find("</")) != std::string::npos;) s.replace(i, 2, "<\\/");
+    return s;
+  };
+  std::ostringstream o;
+  o << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" << html_escape(title)
+    << "</title>\n<style>body{font-family:sans-serif;margin:1em}img{border:1px solid #ccc;max-width:100%}"
+       "#bar{margin:.5em 0}button{margin-right:.3em}</style>\n</head>\n<body>\n<h1>"
+    << html_escape(title)
+    << "</h1>\n<div id=\"bar\"><button id=\"first\">&#x23EE;</button><button id=\"prev\">&#x25C0;</button><button "
+       "id=\"next\">&#x25B6;</button><button id=\"last\">&#x23ED;</button> <span id=\"at\"></span></div>\n<p id=\"caption\"></p>\n"
+       "<img id=\"picture\" alt=\"\">\n<p>Keys: &larr; &rarr; step, Home and End. The trace is <a href=\"trace.json\">trace.json</a>.</p>\n"
+       "<script>\nconst files = "
+    << safe(f.dump()) << ";\nconst captions = " << safe(c.dump())
+    << ";\nlet at = 0;\nfunction show(k) {\n  at = Math.max(0, Math.min(files.length - 1, k));\n"
+       "  document.getElementById('picture').src = files[at];\n  document.getElementById('caption').textContent = captions[at];\n"
+       "  document.getElementById('at').textContent = 'step ' + at + ' of ' + (files.length - 1);\n  location.hash = at;\n}\n"
+       "document.addEventListener('keydown', e => {\n  if (e.key === 'ArrowRight') show(at + 1);\n  else if (e.key === 'ArrowLeft') show(at - "
+       "1);\n  else if (e.key === 'Home') show(0);\n  else if (e.key === 'End') show(files.length - 1);\n});\n"
+       "for (const [id, d] of [['first', -1e9], ['prev', -1], ['next', 1], ['last', 1e9]])\n"
+       "  document.getElementById(id).onclick = () => show(Math.abs(d) > 1 ? (d < 0 ? 0 : files.length - 1) : at + d);\n"
+       "show(parseInt(location.hash.slice(1)) || 0);\n</script>\n</body>\n</html>\n";
+  return o.str();
+}
+
+/// The geometry of an input file: `--geometry`, or its extension.
+std::string geometry_of(std::string const& given, std::string const& file) {
+  if (!given.empty()) return given;
+  std::string ext = fs::path(file).extension().string();
+  for (auto& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  if (ext == ".e1") return "e1";
+  if (ext == ".s1") return "s1";
+  if (ext == ".wkt") return "e2";
+  throw usage_error(file + ": cannot tell the geometry from '" + ext + "' (.e1 intervals, .s1 arcs, .wkt polygons; or give --geometry)");
+}
+
+template <class Geo> bsp::point_set<typename Geo::G, bool> tree_of(std::vector<typename Geo::G::sub_hyperplane> const& pieces) {
+  if constexpr (requires { Geo::tree_of(pieces); })
+    return Geo::tree_of(pieces);
+  else
+    return bsp::build_point_set<typename Geo::G>(pieces);
+}
+
+bool label_op(std::string const& op, bool a, bool b) {
+  if (op == "union") return a || b;
+  if (op == "intersection") return a && b;
+  if (op == "difference") return a && !b;
+  return a != b;
+}
+
+/// Every step of the command, for the geometry `Geo`.
+template <class Geo> std::vector<step> steps_of(explain_job const& job, json& trace) {
+  Geo a;
+  auto pa = a.read(job.input);
+  std::size_t pieces = pa.size();
+  std::vector<step> out;
+  trace["geometry"] = Geo::name;
+  if (*job.build) {
+    if (pieces > most_pieces)
+      throw usage_error(job.input + ": " + std::to_string(pieces) + " boundary pieces; explain draws at most " + std::to_string(most_pieces) +
+                        " (a picture with more is not readable)");
+    auto t = tree_of<Geo>(pa);
+    replay(a, t, "build", true, out);
+    trace["result"] = {{"interior_nodes", t.interior_count()}, {"cells", bsp::cells(t).size()}};
+    return out;
+  }
+  Geo b;
+  auto pb = b.read(job.other);
+  pieces += pb.size();
+  if (pieces > most_pieces)
+    throw usage_error(job.input + ", " + job.other + ": " + std::to_string(pieces) + " boundary pieces; explain draws at most " +
+                      std::to_string(most_pieces) + " (a picture with more is not readable)");
+  // Both operands in one picture frame: the second's window takes the first's.
+  if constexpr (requires { a.view; }) {
+    auto& v = a.view;
+    v.x0 = std::min(v.x0, b.view.x0), v.y0 = std::min(v.y0, b.view.y0), v.x1 = std::max(v.x1, b.view.x1), v.y1 = std::max(v.y1, b.view.y1);
+    a.height = a.pixels * (v.y1 - v.y0) / (v.x1 - v.x0);
+    b.view = a.view, b.height = a.height;
+  } else if constexpr (requires { a.lo; }) {
+    a.lo = std::min(a.lo, b.lo), a.hi = std::max(a.hi, b.hi);
+    b.lo = a.lo, b.hi = a.hi;
+  }
+  auto ta = tree_of<Geo>(pa), tb = tree_of<Geo>(pb);
+  whole(a, ta, "a", "operand", "operand A: its tree's cells (blue: inside)", out);
+  whole(b, tb, "b", "operand", "operand B: its tree's cells (blue: inside)", out);
+  std::string op = job.op;
+  auto f = [&](bool x, bool y) { return label_op(op, x, y); };
+  auto merged = bsp::merge_unreduced(ta, tb, f);
+  Geo both = a; // draws both operands' boundaries
+  both.add(b);
+  replay(both, merged, "merge " + op, true, out);
+  auto result = bsp::merge(ta, tb, f);
+  whole(both, result, "reduce", "reduce",
+        "reduced: " + std::to_string(merged.interior_count()) + " nodes become " + std::to_string(result.interior_count()), out);
+  trace["result"] = {{"interior_nodes", result.interior_count()}, {"cells", bsp::cells(result).size()}};
+  return out;
+}
+
+} // namespace
+
+void explain_job::add_to(CLI::App& app) {
+  command = app.add_subcommand("explain", "an algorithm of the tree step by step on a small input: numbered SVG pictures, index.html, trace.json");
+  command->require_subcommand(1);
+  auto common = [&](CLI::App* c) {
+    c->add_option("--geometry", geometry, "e1 (intervals 'A B' per line), s1 (arcs 'X1,Y1 X2,Y2' per line) or e2 (WKT polygons); default from the extension")
+        ->check(CLI::IsMember({"e1", "s1", "e2"}));
+    c->add_option("-o,--output", output, "the folder to write (made if missing; its earlier pictures are replaced)")->required();
+  };
+  build = command->add_subcommand("build", "building a point-set tree from a boundary (Thibault and Naylor), one node at a time");
+  build->add_option("input", input, "the region: .e1, .s1 or .wkt")->required();
+  common(build);
+  merge = command->add_subcommand("merge", "a Boolean operation by merging two trees (Naylor, Amanatides and Thibault), then reducing");
+  merge->add_option("a", input, "the first region")->required();
+  merge->add_option("b", other, "the second region")->required();
+  merge->add_option("--op", op, "union, intersection, difference or xor")->check(CLI::IsMember({"union", "intersection", "difference", "xor"}));
+  common(merge);
+}
+
+void explain_job::run() const {
+  json trace{{"genbsp", version()}, {"command", *build ? "build" : "merge"}};
+  trace["inputs"] = *build ? json::array({input}) : json::array({input, other});
+  if (*merge) trace["op"] = op;
+  std::string g = geometry_of(geometry, input);
+  if (*merge && geometry.empty() && geometry_of("", other) != g) throw usage_error(input + ", " + other + ": the two inputs are of different geometries");
+  std::vector<step> steps = g == "e1"   ? steps_of<line_geometry>(*this, trace)
+                            : g == "s1" ? steps_of<circle_geometry>(*this, trace)
+                                        : steps_of<plane_geometry>(*this, trace);
+  // Written only once everything is made; earlier pictures in the folder go first.
+  std::error_code ec;
+  fs::create_directories(output, ec);
+  if (ec || !fs::is_directory(output)) throw file_error(output + ": cannot make the folder" + (ec ? " (" + ec.message() + ")" : ""), ec.value());
+  for (auto const& e : fs::directory_iterator(output)) {
+    auto name = e.path().filename().string();
+    if (name.starts_with("step-") && name.ends_with(".svg")) fs::remove(e.path());
+  }
+  std::vector<std::string> files, captions;
+  json list = json::array();
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    std::ostringstream name;
+    name << "step-" << std::setw(3) << std::setfill('0') << k << ".svg";
+    write_file((fs::path(output) / name.str()).string(), steps[k].svg);
+    files.push_back(name.str());
+    captions.push_back(steps[k].trace["caption"].get<std::string>());
+    json s{{"step", k}, {"picture", name.str()}};
+    s.update(steps[k].trace);
+    list.push_back(std::move(s));
+  }
+  trace["steps"] = std::move(list);
+  write_file((fs::path(output) / "trace.json").string(), trace.dump(1) + "\n");
+  std::string title = std::string("genbsp explain ") + (*build ? "build " + input : "merge " + input + " " + other + " --op " + op);
+  write_file((fs::path(output) / "index.html").string(), index_html(files, captions, title));
+  out() << json{{"genbsp", version()}, {"steps", steps.size()}, {"output", output}}.dump() << "\n";
+}
+
+} // namespace genbsp_tool

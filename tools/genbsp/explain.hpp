@@ -1,0 +1,22 @@
+// The teaching subcommand of genbsp: `explain`.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+
+namespace genbsp_tool {
+
+/// `genbsp explain build INPUT -o DIR` and `genbsp explain merge A B --op OP
+/// -o DIR`: an algorithm step by step on a small input, as numbered SVG
+/// pictures, an `index.html` that steps through them and a JSON trace.
+struct explain_job {
+  std::string input, other, op = "union", geometry, output;
+  CLI::App* command = nullptr;
+  CLI::App* build = nullptr;
+  CLI::App* merge = nullptr;
+  void add_to(CLI::App& app);
+  void run() const;
+};
+
+} // namespace genbsp_tool
