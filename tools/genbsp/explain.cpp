@@ -284,7 +284,12 @@ struct plane_geometry {
   std::string text(G::hyperplane const& h) const {
     return linear_text({{h.n[0], "x"}, {h.n[1], "y"}, {h.n[2], ""}}) + " (positive side where the left side is > 0)";
   }
-  std::string short_text(G::hyperplane const& h) const { return linear_text({{h.n[0], "x"}, {h.n[1], "y"}, {h.n[2], ""}}); }
+  /// The line alone (its equation with a positive first coefficient); `text` tells its orientation.
+  std::string short_text(G::hyperplane const& h) const {
+    rational s = h.n[0] != 0 ? h.n[0] : h.n[1];
+    int k = s < 0 ? -1 : 1;
+    return linear_text({{rational(k * h.n[0]), "x"}, {rational(k * h.n[1]), "y"}, {rational(k * h.n[2]), ""}});
+  }
   json region(G::polytope const& c) const {
     json j;
     auto v = geometry::e2::vertices(c);
@@ -518,7 +523,7 @@ template <class Geo> std::vector<step> steps_of(explain_job const& job, json& tr
   replay(both, merged, "merge " + op, true, out);
   auto result = bsp::merge(ta, tb, f);
   whole(both, result, "reduce", "reduce",
-        "reduced: " + std::to_string(merged.interior_count()) + " nodes become " + std::to_string(result.interior_count()), out);
+        "reduced: " + std::to_string(merged.interior_count()) + " nodes before, " + std::to_string(result.interior_count()) + " after", out);
   trace["result"] = {{"interior_nodes", result.interior_count()}, {"cells", bsp::cells(result).size()}};
   return out;
 }

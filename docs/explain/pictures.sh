@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# The pictures of docs/learning.md, made by `genbsp explain` from the inputs in
+# this folder.  With --check, makes them in a temporary folder and fails when
+# one differs from the committed docs/images/explain/ (a stale picture).
+#
+#   docs/explain/pictures.sh [--check] GENBSP
+set -euo pipefail
+check=0
+if [[ ${1:-} == --check ]]; then check=1; shift; fi
+genbsp=${1:?usage: pictures.sh [--check] GENBSP}
+here=$(cd "$(dirname "$0")" && pwd)
+images=$here/../images/explain
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+run() { "$genbsp" explain "$@" >/dev/null; }
+run build "$here/square-with-hole.wkt" -o "$work/e2-build"
+run merge "$here/square-with-hole.wkt" "$here/triangle.wkt" --op difference -o "$work/e2-merge"
+run merge "$here/intervals-a.e1" "$here/intervals-b.e1" --op xor -o "$work/e1-merge"
+run merge "$here/arcs-a.s1" "$here/arcs-b.s1" --op union -o "$work/s1-merge"
+
+# picture NAME RUN STEP: step STEP of RUN (a negative STEP counts from the end).
+out=$work/pictures
+mkdir -p "$out"
+picture() {
+  local files=("$work/$2"/step-*.svg) k=$3
+  ((k < 0)) && k=$((${#files[@]} + k))
+  cp "${files[$k]}" "$out/$1.svg"
+}
+picture e2-build-0 e2-build 0
+picture e2-build-1 e2-build 1
+picture e2-build-5 e2-build 5
+picture e2-build-last e2-build -1
+picture e2-merge-a e2-merge 0
+picture e2-merge-b e2-merge 1
+picture e2-merge-step e2-merge 12
+picture e2-merge-result e2-merge -1
+picture e1-merge-a e1-merge 0
+picture e1-merge-b e1-merge 1
+picture e1-merge-result e1-merge -1
+picture s1-merge-a s1-merge 0
+picture s1-merge-b s1-merge 1
+picture s1-merge-result s1-merge -1
+
+if ((check)); then
+  status=0
+  for f in "$out"/*.svg; do
+    name=$(basename "$f")
+    if ! cmp -s "$f" "$images/$name"; then
+      echo "docs/images/explain/$name: stale (run docs/explain/pictures.sh $genbsp)" >&2
+      status=1
+    fi
+  done
+  for f in "$images"/*.svg; do
+    [[ -e $out/$(basename "$f") ]] || { echo "docs/images/explain/$(basename "$f"): no longer made" >&2; status=1; }
+  done
+  exit $status
+fi
+mkdir -p "$images"
+rm -f "$images"/*.svg
+cp "$out"/*.svg "$images/"
+echo "wrote $(ls "$out" | wc -l) pictures to docs/images/explain"
