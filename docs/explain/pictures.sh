@@ -18,6 +18,7 @@ run build "$here/square-with-hole.wkt" -o "$work/e2-build"
 run merge "$here/square-with-hole.wkt" "$here/triangle.wkt" --op difference -o "$work/e2-merge"
 run merge "$here/intervals-a.e1" "$here/intervals-b.e1" --op xor -o "$work/e1-merge"
 run merge "$here/arcs-a.s1" "$here/arcs-b.s1" --op union -o "$work/s1-merge"
+run depth-order "$here/walls.wkt" --eye 0,0 -o "$work/depth"
 
 # picture NAME RUN STEP: step STEP of RUN (a negative STEP counts from the end).
 out=$work/pictures
@@ -41,6 +42,9 @@ picture e1-merge-result e1-merge -1
 picture s1-merge-a s1-merge 0
 picture s1-merge-b s1-merge 1
 picture s1-merge-result s1-merge -1
+picture depth-build depth 8
+picture depth-order-3 depth 11
+picture depth-order-last depth -1
 
 if ((check)); then
   status=0

@@ -629,6 +629,59 @@ assert inside(t("merge-e1"), "length") == Fraction(7, 2)   # [0,.5] [1,2] [2.5,3
 assert abs(inside(t("build-s1"), "length") - math.pi) < 1e-12
 assert abs(inside(t("merge-s1"), "length") - 5 * math.pi / 4) < 1e-12
 PY
+# Depth order: the segments front to back from the eye, checked against rays cast
+# exactly between every pair, and every segment listed.
+cat >"$ex/walls.wkt" <<'WKT'
+GEOMETRYCOLLECTION(LINESTRING(1 1, 4 2), LINESTRING(2 3, 5 0), LINESTRING(0 4, 3 5),
+  POLYGON((5 3, 6 3, 6 4, 5 4, 5 3)), LINESTRING(-1 2, 0 2, 1 2))
+WKT
+quiet "$genbsp" explain depth-order "$ex/walls.wkt" --eye 0,0 -o "$ex/depth"
+check "explain depth-order: exit status 0" test $? -eq 0
+check "explain depth-order: front to back along every ray" python3 - "$ex/depth" <<'PY'
+import json, os, sys
+import xml.etree.ElementTree as ET
+from fractions import Fraction as F
+d = sys.argv[1]
+trace = json.load(open(os.path.join(d, "trace.json")))
+order = trace["result"]["order"]
+eye = [F(x) for x in trace["eye"]]
+steps = trace["steps"]
+assert len(steps) == len([f for f in os.listdir(d) if f.startswith("step-")])
+assert len(steps) == trace["result"]["interior_nodes"] + 1 + len(order)
+assert [s["segment"] for s in steps if s["operation"] == "emit"] == [o["segment"] for o in order]
+assert {o["segment"] for o in order} == set(range(9))     # 4 polygon edges, 5 line segments
+for s in steps:
+    ET.parse(os.path.join(d, s["picture"]))
+last = ET.parse(os.path.join(d, steps[-1]["picture"])).getroot()
+assert sorted(int(e.get("data-rank")) for e in last.iter() if e.get("data-rank")) == list(range(len(order)))
+def vec(p): return (F(p[0]) - eye[0], F(p[1]) - eye[1])
+def cross(a, b): return a[0] * b[1] - a[1] * b[0]
+def wedge(piece):
+    p, q = vec(piece[0]), vec(piece[1])
+    c = cross(p, q)
+    return None if c == 0 else ((p, q) if c > 0 else (q, p))
+def inside(v, w): return cross(w[0], v) > 0 and cross(v, w[1]) > 0
+def hit(v, piece):   # t with eye + t v on the segment
+    a, b = vec(piece[0]), vec(piece[1])
+    e = (b[0] - a[0], b[1] - a[1])
+    return cross(a, e) / cross(v, e)
+pieces = [o["piece"] for o in order]
+checked = 0
+for i in range(len(pieces)):
+    for j in range(i + 1, len(pieces)):
+        wi, wj = wedge(pieces[i]), wedge(pieces[j])
+        if not wi or not wj:
+            continue
+        ends = [vec(p) for p in pieces[i] + pieces[j]]
+        for a in range(4):
+            for b in range(a + 1, 4):
+                v = (ends[a][0] + ends[b][0], ends[a][1] + ends[b][1])
+                if inside(v, wi) and inside(v, wj):
+                    checked += 1
+                    assert hit(v, pieces[i]) <= hit(v, pieces[j]), (i, j)
+assert checked > 10, checked
+PY
+expect_error "explain depth-order: an eye of one number" '--eye' "$genbsp" explain depth-order "$ex/walls.wkt" --eye 1 -o "$ex/o"
 quiet "$genbsp" explain build "$ex/a.e1" -o "$ex/build-e2"
 check "explain: a second run replaces the earlier pictures" test "$(ls "$ex/build-e2" | grep -c '^step-')" -eq 7
 python3 -c "
@@ -647,7 +700,7 @@ expect_error "explain: an unknown extension" "cannot tell the geometry from '.js
 expect_error "explain: operands of two geometries" 'different geometries' "$genbsp" explain merge "$ex/a.e1" "$ex/a.wkt" -o "$ex/o"
 expect_error "explain: a missing subcommand" 'subcommand' "$genbsp" explain "$ex/a.e1" -o "$ex/o"
 
-for sub in map locate stats scene render view shadow bool csg visibility2d batch explain "explain build" "explain merge"; do
+for sub in map locate stats scene render view shadow bool csg visibility2d batch explain "explain build" "explain merge" "explain depth-order"; do
   "$genbsp" $sub --help >"$work/help" 2>&1
   check "$sub --help exits 0" test $? -eq 0
   check "$sub --help says what it does" grep -q "Usage" "$work/help"

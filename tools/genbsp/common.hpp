@@ -97,6 +97,23 @@ inline void write_file(std::string const& path, std::string const& text) {
   }
 }
 
+/// "A,B,…" read exactly as `count` numbers.
+inline std::vector<rational> parse_numbers(std::string const& text, std::size_t count, std::string const& option, std::string const& form) {
+  std::vector<rational> out;
+  std::size_t start = 0;
+  for (std::size_t i = 0; i < count; ++i) {
+    std::size_t end = text.find(',', start);
+    if ((i + 1 < count) != (end != std::string::npos)) throw usage_error(option + ": expected " + form + ", got '" + text + "'");
+    try {
+      out.push_back(geometry::parse_number<rational>(text.substr(start, end == std::string::npos ? std::string::npos : end - start)));
+    } catch (geometry::parse_error const& e) {
+      throw usage_error(option + ": " + e.what());
+    }
+    start = end + 1;
+  }
+  return out;
+}
+
 /// An exact number as text: a decimal when it terminates, else p/q.
 inline std::string exact_text(rational const& q) {
   auto den = boost::multiprecision::denominator(q);

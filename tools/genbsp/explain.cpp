@@ -7,6 +7,7 @@
 #include "common.hpp"
 
 #include <boolean/polygons.hpp>
+#include <bsp/depth_order.hpp>
 #include <bsp/explain.hpp>
 #include <geometry/e1.hpp>
 #include <geometry/e2/svg.hpp>
@@ -23,6 +24,7 @@
 #include <iomanip>
 #include <numbers>
 #include <sstream>
+#include <type_traits>
 
 namespace genbsp_tool {
 
@@ -30,6 +32,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using json = nlohmann::ordered_json;
+using point2 = geometry::io::point2;
 
 /// Pictures with more hyperplanes than this are not readable.
 constexpr std::size_t most_pieces = 200;
@@ -264,18 +267,30 @@ struct plane_geometry {
       throw usage_error(file + ": " + e.what());
     }
     if (edges.empty()) throw usage_error(file + ": no polygon with an area");
+    std::vector<geometry::e2::point<rational>> corners;
+    for (auto const& p : m) corners.insert(corners.end(), p.outer.begin(), p.outer.end());
+    frame(corners);
+    return edges;
+  }
+  /// The window of the pictures: around `points`, with a margin.
+  void frame(std::vector<geometry::e2::point<rational>> const& points) {
     double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
     bool first = true;
-    for (auto const& p : m)
-      for (auto const& v : p.outer) {
-        double x = v.x().convert_to<double>(), y = v.y().convert_to<double>();
-        if (first) x0 = x1 = x, y0 = y1 = y, first = false;
-        x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
-      }
+    for (auto const& v : points) {
+      double x = v.x().convert_to<double>(), y = v.y().convert_to<double>();
+      if (first) x0 = x1 = x, y0 = y1 = y, first = false;
+      x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+    }
     double pad = std::max(std::max(x1 - x0, y1 - y0) * 0.15, 0.5);
     view = {x0 - pad, y0 - pad, x1 + pad, y1 + pad, pixels};
     height = pixels * (view.y1 - view.y0) / (view.x1 - view.x0);
-    return edges;
+  }
+  /// A segment drawn over the picture (a fragment of a depth-order tree).
+  void draw_segment(std::ostream& o, G::sub_hyperplane const& s, std::string const& colour, std::string const& attributes) const {
+    if (auto e = geometry::e2::endpoints(s))
+      o << "<line " << attributes << " stroke=\"" << colour << "\" stroke-width=\"5\" stroke-linecap=\"round\" x1=\""
+        << fmt(X(geometry::to_double(e->first.x()))) << "\" y1=\"" << fmt(Y(geometry::to_double(e->first.y()))) << "\" x2=\""
+        << fmt(X(geometry::to_double(e->second.x()))) << "\" y2=\"" << fmt(Y(geometry::to_double(e->second.y()))) << "\"/>\n";
   }
   /// The tree the library builds for the polygons (the order its Boolean operations use).
   static bsp::point_set<G, bool> tree_of(std::vector<G::sub_hyperplane> const& e) {
@@ -360,9 +375,25 @@ struct step {
 };
 
 /// The picture and trace entry of tree `t` after `placed` of its nodes.
-template <class Geo>
-step picture(Geo const& geo, bsp::point_set<typename Geo::G, bool> const& t, std::size_t placed, bool replaying, bool show_input,
-             std::string const& caption) {
+/// A leaf's label in a picture: a point set's own, and outside (no
+/// fragment) for a depth-order tree, whose leaves have none.
+template <class Tree> bool leaf_label(Tree const& t, bsp::node_id n) {
+  if constexpr (std::is_same_v<typename Tree::leaf_data_type, bool>)
+    return t.leaf_data(n);
+  else
+    return false;
+}
+
+/// Draws nothing more on a picture.
+struct nothing_more {
+  void operator()(std::ostream&, std::size_t) const {}
+};
+
+/// The picture and trace entry of tree `t` after `placed` of its nodes;
+/// `more(out, placed)` draws over it (a depth-order tree's fragments).
+template <class Geo, class Tree, class More = nothing_more>
+step picture(Geo const& geo, Tree const& t, std::size_t placed, bool replaying, bool show_input, std::string const& caption,
+             More more = {}) {
   auto state = bsp::state_after(t, placed);
   std::ostringstream o;
   double w = geo.width, h = geo.height + 28;
@@ -371,7 +402,7 @@ step picture(Geo const& geo, bsp::point_set<typename Geo::G, bool> const& t, std
   json cells = json::array();
   for (auto const& c : state.cells) {
     std::optional<bool> label;
-    if (!c.pending) label = t.leaf_data(c.node);
+    if (!c.pending) label = leaf_label(t, c.node);
     geo.draw_cell(o, c.region, label, node_name(c.node));
     json j{{"node", node_name(c.node)}, {"label", label ? json(*label) : json(nullptr)}, {"pending", c.pending}};
     j.update(geo.region(c.region));
@@ -381,14 +412,14 @@ step picture(Geo const& geo, bsp::point_set<typename Geo::G, bool> const& t, std
   // While replaying, nodes are numbered in the order they were placed, the newest in red.
   for (auto const& [n, cell] : state.splits)
     geo.draw_split(o, t.splitter(n), cell, replaying ? static_cast<long>(n.index()) : -1, replaying && n.index() + 1 == placed);
+  more(o, placed);
   o << "</g>\n<text font-size=\"12\" x=\"6\" y=\"18\">" << html_escape(caption) << "</text>\n</svg>\n";
   return {json{{"cells", std::move(cells)}}, o.str()};
 }
 
 /// Every step of the tree `t`'s making: the whole space, then one node at a time.
-template <class Geo>
-void replay(Geo const& geo, bsp::point_set<typename Geo::G, bool> const& t, std::string const& phase, bool show_input,
-            std::vector<step>& out) {
+template <class Geo, class Tree, class More = nothing_more>
+void replay(Geo const& geo, Tree const& t, std::string const& phase, bool show_input, std::vector<step>& out, More more = {}) {
   auto places = bsp::interior_places(t);
   for (std::size_t k = 0; k <= t.interior_count(); ++k) {
     std::string caption;
@@ -408,7 +439,7 @@ void replay(Geo const& geo, bsp::point_set<typename Geo::G, bool> const& t, std:
       head["hyperplane"] = geo.text(t.splitter(n));
       caption = phase + ", step " + std::to_string(k) + ": node " + std::to_string(k - 1) + " splits its cell by " + geo.short_text(t.splitter(n));
     }
-    auto s = picture(geo, t, k, true, show_input, caption);
+    auto s = picture(geo, t, k, true, show_input, caption, more);
     head.update(s.trace);
     head["caption"] = caption;
     out.push_back({std::move(head), std::move(s.svg)});
@@ -528,6 +559,105 @@ template <class Geo> std::vector<step> steps_of(explain_job const& job, json& tr
   return out;
 }
 
+/// A colour from dark (rank 0, the front) to light (the back).
+std::string rank_colour(std::size_t rank, std::size_t count) {
+  double t = count > 1 ? static_cast<double>(rank) / static_cast<double>(count - 1) : 0;
+  auto mix = [&](int a, int b) { return static_cast<int>(std::lround(a + (b - a) * t)); };
+  char c[8];
+  std::snprintf(c, sizeof c, "#%02x%02x%02x", mix(0x8c, 0xf4), mix(0x1d, 0xa5), mix(0x18, 0x82));
+  return c;
+}
+
+/// The segments of a plane scene (polygons' edges and line strings), in file order.
+std::vector<std::pair<point2, point2>> segments_of(std::string const& file) {
+  auto walls = geometry::io::read_walls(file);
+  std::vector<std::pair<point2, point2>> out;
+  auto path = [&](geometry::io::ring const& r, bool closed) {
+    for (std::size_t i = 0; i + (closed ? 0 : 1) < r.size(); ++i) {
+      auto const &a = r[i], &b = r[(i + 1) % r.size()];
+      if (!(a == b)) out.emplace_back(a, b);
+    }
+  };
+  for (auto const& p : walls.polygons) {
+    auto outer = p.outer;
+    if (outer.size() > 1 && outer.front() == outer.back()) outer.pop_back();
+    path(outer, true);
+    for (auto h : p.holes) {
+      if (h.size() > 1 && h.front() == h.back()) h.pop_back();
+      path(h, true);
+    }
+  }
+  for (auto const& l : walls.lines) path(l, false);
+  return out;
+}
+
+/// Depth order from a point: the tree's making, then its fragments front to back.
+std::vector<step> depth_order_steps(explain_job const& job, json& trace) {
+  using K = boolean::plane_kernel;
+  auto c = parse_numbers(job.eye, 2, "--eye", "X,Y");
+  point2 eye(c[0], c[1]);
+  auto segs = segments_of(job.input);
+  if (segs.empty()) throw usage_error(job.input + ": no segment");
+  if (segs.size() > most_pieces)
+    throw usage_error(job.input + ": " + std::to_string(segs.size()) + " segments; explain draws at most " + std::to_string(most_pieces) +
+                      " (a picture with more is not readable)");
+  trace["geometry"] = "e2";
+  trace["eye"] = json::array({exact_text(eye.x()), exact_text(eye.y())});
+  plane_geometry geo;
+  std::vector<point2> points{eye};
+  bsp::fragment_list<K> input;
+  for (std::size_t i = 0; i < segs.size(); ++i) {
+    auto s = geometry::e2::segment(segs[i].first, segs[i].second);
+    geo.edges.push_back(s);
+    input.push_back({s, i});
+    points.push_back(segs[i].first), points.push_back(segs[i].second);
+  }
+  geo.frame(points);
+  auto t = bsp::build_depth_order<K>(input);
+  std::vector<step> out;
+  // While building, each placed node's fragments are drawn over its line.
+  auto at_nodes = [&](std::ostream& o, std::size_t placed) {
+    for (std::uint32_t n = 0; n < placed; ++n)
+      for (auto const& f : t.node_data(bsp::node_id::interior(n)))
+        geo.draw_segment(o, f.piece, "#333333", "data-fragment=\"" + std::to_string(f.id) + "\"");
+  };
+  replay(geo, t, "build", true, out, at_nodes);
+  std::vector<bsp::fragment<K>> order;
+  bsp::for_each_front_to_back(t, eye, [&](bsp::fragment<K> const& f) { order.push_back(f); });
+  auto endpoints = [](K::sub_hyperplane const& s) {
+    auto e = geometry::e2::endpoints(s);
+    return json::array({json::array({exact_text(e->first.x()), exact_text(e->first.y())}),
+                        json::array({exact_text(e->second.x()), exact_text(e->second.y())})});
+  };
+  json listed = json::array();
+  for (std::size_t k = 1; k <= order.size(); ++k) {
+    auto drawn = [&](std::ostream& o, std::size_t) {
+      for (std::size_t r = 0; r < order.size(); ++r)
+        geo.draw_segment(o, order[r].piece, r < k ? rank_colour(r, order.size()) : "#bbbbbb",
+                         "data-rank=\"" + (r < k ? std::to_string(r) : std::string("later")) + "\"");
+      for (std::size_t r = 0; r < k; ++r)
+        if (auto e = geometry::e2::endpoints(order[r].piece))
+          o << "<text font-size=\"11\" font-weight=\"bold\" x=\"" << fmt((geo.X(geometry::to_double(e->first.x())) + geo.X(geometry::to_double(e->second.x()))) / 2 + 4)
+            << "\" y=\"" << fmt((geo.Y(geometry::to_double(e->first.y())) + geo.Y(geometry::to_double(e->second.y()))) / 2 - 4) << "\">" << r
+            << "</text>\n";
+      o << "<circle cx=\"" << fmt(geo.X(geometry::to_double(eye.x()))) << "\" cy=\"" << fmt(geo.Y(geometry::to_double(eye.y())))
+        << "\" r=\"5\" fill=\"#d62728\"/>\n";
+    };
+    auto const& f = order[k - 1];
+    std::string caption = "front to back, step " + std::to_string(k) + ": number " + std::to_string(k - 1) + " is (part of) input segment " +
+                          std::to_string(f.id);
+    auto s = picture(geo, t, t.interior_count(), false, false, caption, drawn);
+    json head{{"phase", "front to back"}, {"operation", "emit"}, {"rank", k - 1}, {"segment", f.id}, {"piece", endpoints(f.piece)}};
+    head.update(s.trace);
+    head["caption"] = caption;
+    out.push_back({std::move(head), std::move(s.svg)});
+    listed.push_back({{"rank", k - 1}, {"segment", f.id}, {"piece", endpoints(f.piece)}});
+  }
+  trace["result"] = {{"interior_nodes", t.interior_count()}, {"cells", bsp::cells(t).size()}, {"fragments", order.size()},
+                     {"order", std::move(listed)}};
+  return out;
+}
+
 } // namespace
 
 void explain_job::add_to(CLI::App& app) {
@@ -546,17 +676,25 @@ void explain_job::add_to(CLI::App& app) {
   merge->add_option("b", other, "the second region")->required();
   merge->add_option("--op", op, "union, intersection, difference or xor")->check(CLI::IsMember({"union", "intersection", "difference", "xor"}));
   common(merge);
+  depth = command->add_subcommand("depth-order", "a depth-order tree of segments (Fuchs, Kedem and Naylor), then its segments front to back from an eye");
+  depth->add_option("input", input, "the segments: polygons' edges and line strings (.wkt or GeoJSON)")->required();
+  depth->add_option("--eye", eye, "the eye X,Y, read exactly")->required();
+  depth->add_option("-o,--output", output, "the folder to write (made if missing; its earlier pictures are replaced)")->required();
 }
 
 void explain_job::run() const {
-  json trace{{"genbsp", version()}, {"command", *build ? "build" : "merge"}};
-  trace["inputs"] = *build ? json::array({input}) : json::array({input, other});
+  json trace{{"genbsp", version()}, {"command", *build ? "build" : *merge ? "merge" : "depth-order"}};
+  trace["inputs"] = *merge ? json::array({input, other}) : json::array({input});
   if (*merge) trace["op"] = op;
-  std::string g = geometry_of(geometry, input);
-  if (*merge && geometry.empty() && geometry_of("", other) != g) throw usage_error(input + ", " + other + ": the two inputs are of different geometries");
-  std::vector<step> steps = g == "e1"   ? steps_of<line_geometry>(*this, trace)
-                            : g == "s1" ? steps_of<circle_geometry>(*this, trace)
-                                        : steps_of<plane_geometry>(*this, trace);
+  std::vector<step> steps;
+  if (*depth) {
+    steps = depth_order_steps(*this, trace);
+  } else {
+    std::string g = geometry_of(geometry, input);
+    if (*merge && geometry.empty() && geometry_of("", other) != g)
+      throw usage_error(input + ", " + other + ": the two inputs are of different geometries");
+    steps = g == "e1" ? steps_of<line_geometry>(*this, trace) : g == "s1" ? steps_of<circle_geometry>(*this, trace) : steps_of<plane_geometry>(*this, trace);
+  }
   // Written only once everything is made; earlier pictures in the folder go first.
   std::error_code ec;
   fs::create_directories(output, ec);
@@ -579,7 +717,9 @@ void explain_job::run() const {
   }
   trace["steps"] = std::move(list);
   write_file((fs::path(output) / "trace.json").string(), trace.dump(1) + "\n");
-  std::string title = std::string("genbsp explain ") + (*build ? "build " + input : "merge " + input + " " + other + " --op " + op);
+  std::string title = std::string("genbsp explain ") + (*build   ? "build " + input
+                                                        : *merge ? "merge " + input + " " + other + " --op " + op
+                                                                 : "depth-order " + input + " --eye " + eye);
   write_file((fs::path(output) / "index.html").string(), index_html(files, captions, title));
   out() << json{{"genbsp", version()}, {"steps", steps.size()}, {"output", output}}.dump() << "\n";
 }

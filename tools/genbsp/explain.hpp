@@ -7,14 +7,16 @@
 
 namespace genbsp_tool {
 
-/// `genbsp explain build INPUT -o DIR` and `genbsp explain merge A B --op OP
-/// -o DIR`: an algorithm step by step on a small input, as numbered SVG
-/// pictures, an `index.html` that steps through them and a JSON trace.
+/// `genbsp explain build INPUT -o DIR`, `genbsp explain merge A B --op OP -o
+/// DIR` and `genbsp explain depth-order SEGMENTS --eye X,Y -o DIR`: an
+/// algorithm step by step on a small input, as numbered SVG pictures, an
+/// `index.html` that steps through them and a JSON trace.
 struct explain_job {
-  std::string input, other, op = "union", geometry, output;
+  std::string input, other, op = "union", geometry, output, eye;
   CLI::App* command = nullptr;
   CLI::App* build = nullptr;
   CLI::App* merge = nullptr;
+  CLI::App* depth = nullptr;
   void add_to(CLI::App& app);
   void run() const;
 };

@@ -23,23 +23,6 @@ using json = nlohmann::ordered_json;
 using point2 = geometry::e2::point<rational>;
 using walls = svm::wall_scene<rational>;
 
-/// "A,B,…" read exactly as `count` numbers.
-std::vector<rational> numbers(std::string const& text, std::size_t count, std::string const& option, std::string const& form) {
-  std::vector<rational> out;
-  std::size_t start = 0;
-  for (std::size_t i = 0; i < count; ++i) {
-    std::size_t end = text.find(',', start);
-    if ((i + 1 < count) != (end != std::string::npos)) throw usage_error(option + ": expected " + form + ", got '" + text + "'");
-    try {
-      out.push_back(geometry::parse_number<rational>(text.substr(start, end == std::string::npos ? std::string::npos : end - start)));
-    } catch (geometry::parse_error const& e) {
-      throw usage_error(option + ": " + e.what());
-    }
-    start = end + 1;
-  }
-  return out;
-}
-
 rational twice_area(geometry::io::ring const& r) {
   rational t(0);
   for (std::size_t i = 0; i < r.size(); ++i) {
@@ -162,7 +145,7 @@ void visibility2d_job::run() const {
   if (batch && ext == ".svg") throw usage_error("--eyes: one polygon per eye goes to .wkt or .geojson, not .svg");
   std::vector<point2> os;
   if (!batch) {
-    auto e = numbers(eye, 2, "--eye", "two numbers X,Y");
+    auto e = parse_numbers(eye, 2, "--eye", "two numbers X,Y");
     os.emplace_back(e[0], e[1]);
   } else {
     os = read_eyes(eyes);
@@ -182,7 +165,7 @@ void visibility2d_job::run() const {
   };
   json box_json = nullptr;
   if (!box.empty()) {
-    auto b = numbers(box, 4, "--box", "four numbers XMIN,YMIN,XMAX,YMAX");
+    auto b = parse_numbers(box, 4, "--box", "four numbers XMIN,YMIN,XMAX,YMAX");
     if (!(b[0] < b[2] && b[1] < b[3])) throw usage_error("--box: expected XMIN < XMAX and YMIN < YMAX, got '" + box + "'");
     for (std::size_t k = 0; k < os.size(); ++k)
       if (os[k].x() < b[0] || os[k].x() > b[2] || os[k].y() < b[1] || os[k].y() > b[3])
