@@ -19,6 +19,8 @@ run merge "$here/square-with-hole.wkt" "$here/triangle.wkt" --op difference -o "
 run merge "$here/intervals-a.e1" "$here/intervals-b.e1" --op xor -o "$work/e1-merge"
 run merge "$here/arcs-a.s1" "$here/arcs-b.s1" --op union -o "$work/s1-merge"
 run depth-order "$here/walls.wkt" --eye 0,0 -o "$work/depth"
+run merge "$here/region.geojson" "$here/triangle.geojson" --op intersection -o "$work/s2-merge"
+run visibility2d "$here/room.wkt" --eye 1,4 -o "$work/seen"
 
 # picture NAME RUN STEP: step STEP of RUN (a negative STEP counts from the end).
 out=$work/pictures
@@ -45,6 +47,12 @@ picture s1-merge-result s1-merge -1
 picture depth-build depth 8
 picture depth-order-3 depth 11
 picture depth-order-last depth -1
+picture s2-merge-a s2-merge 0
+picture s2-merge-step s2-merge 12
+picture s2-merge-result s2-merge -1
+picture seen-0 seen 0
+picture seen-3 seen 3
+picture seen-last seen -1
 
 if ((check)); then
   status=0

@@ -584,6 +584,14 @@ check "explain build e2: exit status 0" test $? -eq 0
 quiet "$genbsp" explain merge "$ex/a.wkt" "$ex/b.wkt" --op difference -o "$ex/merge-e2"
 "$genbsp" bool "$ex/a.wkt" "$ex/b.wkt" --op difference -o "$ex/difference.wkt" >"$ex/difference.json"
 "$genbsp" bool "$ex/a.wkt" "$ex/a.wkt" --op union -o "$ex/same.wkt" >"$ex/same.json"
+cat >"$ex/a.geojson" <<'JSON'
+{"type": "Polygon", "coordinates": [[[0, 0], [40, 0], [40, 30], [0, 30], [0, 0]], [[10, 10], [10, 20], [20, 20], [20, 10], [10, 10]]]}
+JSON
+echo '{"type": "Polygon", "coordinates": [[[20, -10], [60, 10], [30, 50], [20, -10]]]}' >"$ex/b.geojson"
+quiet "$genbsp" explain build "$ex/a.geojson" -o "$ex/build-s2"
+quiet "$genbsp" explain merge "$ex/a.geojson" "$ex/b.geojson" --op intersection -o "$ex/merge-s2"
+"$genbsp" bool "$ex/a.geojson" "$ex/a.geojson" --geometry s2 --op union -o "$ex/same-s2.geojson" >"$ex/same-s2.json"
+"$genbsp" bool "$ex/a.geojson" "$ex/b.geojson" --geometry s2 --op intersection -o "$ex/and-s2.geojson" >"$ex/and-s2.json"
 quiet "$genbsp" explain build "$ex/a.e1" -o "$ex/build-e1"
 quiet "$genbsp" explain merge "$ex/a.e1" "$ex/b.e1" --op xor -o "$ex/merge-e1"
 quiet "$genbsp" explain build "$ex/a.s1" -o "$ex/build-s1"
@@ -595,7 +603,7 @@ from fractions import Fraction
 d = sys.argv[1]
 def inside(step, key):
     return sum(Fraction(c[key]) if isinstance(c[key], str) else c[key] for c in step["cells"] if c["label"] is True)
-for run in ("build-e2", "merge-e2", "build-e1", "merge-e1", "build-s1", "merge-s1"):
+for run in ("build-e2", "merge-e2", "build-e1", "merge-e1", "build-s1", "merge-s1", "build-s2", "merge-s2"):
     folder = os.path.join(d, run)
     trace = json.load(open(os.path.join(folder, "trace.json")))
     pictures = sorted(f for f in os.listdir(folder) if f.startswith("step-"))
@@ -628,6 +636,9 @@ assert inside(t("build-e1"), "length") == Fraction(7, 2)
 assert inside(t("merge-e1"), "length") == Fraction(7, 2)   # [0,.5] [1,2] [2.5,3.5] [5,6]
 assert abs(inside(t("build-s1"), "length") - math.pi) < 1e-12
 assert abs(inside(t("merge-s1"), "length") - 5 * math.pi / 4) < 1e-12
+sr = lambda summary: json.load(open(os.path.join(d, summary)))["area"]
+assert abs(inside(t("build-s2"), "area") - sr("same-s2.json")) < 1e-12
+assert abs(inside(t("merge-s2"), "area") - sr("and-s2.json")) < 1e-12 and sr("and-s2.json") > 0.01
 PY
 # Depth order: the segments front to back from the eye, checked against rays cast
 # exactly between every pair, and every segment listed.
@@ -682,6 +693,44 @@ for i in range(len(pieces)):
 assert checked > 10, checked
 PY
 expect_error "explain depth-order: an eye of one number" '--eye' "$genbsp" explain depth-order "$ex/walls.wkt" --eye 1 -o "$ex/o"
+# 2D visibility: what is seen only grows as pieces arrive front to back, and
+# the last step is genbsp visibility2d's region.
+cat >"$ex/room.wkt" <<'WKT'
+GEOMETRYCOLLECTION(POLYGON((0 0, 10 0, 10 8, 0 8, 0 0)), LINESTRING(3 2, 3 6), LINESTRING(5 5, 8 5), LINESTRING(6 1, 7 3))
+WKT
+quiet "$genbsp" explain visibility2d "$ex/room.wkt" --eye 1,4 -o "$ex/seen"
+check "explain visibility2d: exit status 0" test $? -eq 0
+"$genbsp" visibility2d "$ex/room.wkt" --eye 1,4 -o "$ex/seen.wkt" >"$ex/seen.json"
+check "explain visibility2d: growing front to back, ending as genbsp visibility2d" python3 - "$ex/seen" "$ex/seen.json" <<'PY'
+import json, math, os, sys
+import xml.etree.ElementTree as ET
+from fractions import Fraction as F
+d = sys.argv[1]
+trace = json.load(open(os.path.join(d, "trace.json")))
+steps = trace["steps"]
+assert len(steps) == trace["result"]["fragments"] + 1 == len([f for f in os.listdir(d) if f.startswith("step-")])
+for s in steps:
+    ET.parse(os.path.join(d, s["picture"]))
+assert F(trace["result"]["area"]) == F(json.load(open(sys.argv[2]))["area_exact"])
+assert trace["result"]["bounded"] and steps[0]["arcs"] == [{"from": None, "to": None, "segment": None}]
+def angle(p): return math.atan2(float(F(p[1])), float(F(p[0])))
+def seen(arcs, t):   # the segment seen in direction t (radians), None for nothing
+    for a in arcs:
+        if a["from"] is None:
+            return a["segment"]
+        t0, t1 = angle(a["from"]), angle(a["to"])
+        if (t - t0) % (2 * math.pi) < (t1 - t0) % (2 * math.pi) or (t1 - t0) % (2 * math.pi) == 0:
+            return a["segment"]
+    raise AssertionError("the arcs do not cover the circle")
+probes = [2 * math.pi * (k + 0.37) / 720 for k in range(720)]
+before = [None] * len(probes)
+for s in steps[1:]:
+    now = [seen(s["arcs"], t) for t in probes]
+    assert all(b is None or b == n for b, n in zip(before, now)), s["step"]   # what was seen stays seen
+    before = now
+assert None not in before
+PY
+expect_error "explain visibility2d: an eye on a wall" '--eye: on segment 4' "$genbsp" explain visibility2d "$ex/room.wkt" --eye 3,3 -o "$ex/o"
 quiet "$genbsp" explain build "$ex/a.e1" -o "$ex/build-e2"
 check "explain: a second run replaces the earlier pictures" test "$(ls "$ex/build-e2" | grep -c '^step-')" -eq 7
 python3 -c "
@@ -696,11 +745,12 @@ printf '0 1\n2 x\n' >"$ex/bad.e1"
 expect_error "explain: a bad number, with its line" 'bad.e1:2: not a number' "$genbsp" explain build "$ex/bad.e1" -o "$ex/o"
 printf '1,0 2,0\n' >"$ex/same.s1"
 expect_error "explain: an arc between one direction" 'same.s1:1: the two directions are the same' "$genbsp" explain build "$ex/same.s1" -o "$ex/o"
-expect_error "explain: an unknown extension" "cannot tell the geometry from '.json'" "$genbsp" explain build "$ex/same.json" -o "$ex/o"
+cp "$ex/a.e1" "$ex/a.txt"
+expect_error "explain: an unknown extension" "cannot tell the geometry from '.txt'" "$genbsp" explain build "$ex/a.txt" -o "$ex/o"
 expect_error "explain: operands of two geometries" 'different geometries' "$genbsp" explain merge "$ex/a.e1" "$ex/a.wkt" -o "$ex/o"
 expect_error "explain: a missing subcommand" 'subcommand' "$genbsp" explain "$ex/a.e1" -o "$ex/o"
 
-for sub in map locate stats scene render view shadow bool csg visibility2d batch explain "explain build" "explain merge" "explain depth-order"; do
+for sub in map locate stats scene render view shadow bool csg visibility2d batch explain "explain build" "explain merge" "explain depth-order" "explain visibility2d"; do
   "$genbsp" $sub --help >"$work/help" 2>&1
   check "$sub --help exits 0" test $? -eq 0
   check "$sub --help says what it does" grep -q "Usage" "$work/help"

@@ -7,6 +7,7 @@
 #include "common.hpp"
 
 #include <boolean/polygons.hpp>
+#include <boolean/spherical.hpp>
 #include <bsp/depth_order.hpp>
 #include <bsp/explain.hpp>
 #include <geometry/e1.hpp>
@@ -14,6 +15,7 @@
 #include <geometry/io/geojson.hpp>
 #include <geometry/io/wkt.hpp>
 #include <geometry/s1.hpp>
+#include <svm/visibility2d.hpp>
 
 #include <nlohmann/json.hpp>
 
@@ -367,6 +369,148 @@ std::string html_escape(std::string const& s) {
   return o;
 }
 
+/// S2: spherical polygons (GeoJSON in longitude and latitude, great-circle
+/// edges), drawn on a globe seen from outside, facing the input.
+struct sphere_geometry {
+  using G = boolean::sphere_kernel;
+  using D = boolean::direction;
+  using vec = std::array<double, 3>;
+  static constexpr char const* name = "s2";
+  static constexpr double width = 440, height = 440, cx = 220, cy = 220, r = 200;
+  std::vector<G::sub_hyperplane> edges;
+  vec u{1, 0, 0}, v{0, 1, 0}, w{0, 0, 1}; ///< right, up, towards the viewer
+  G::hyperplane front{D(std::array<rational, 3>{rational(0), rational(0), rational(1)})};
+
+  static vec cross3(vec const& a, vec const& b) { return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; }
+  static double dot3(vec const& a, vec const& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+  static vec unit(vec a) {
+    double l = std::sqrt(dot3(a, a));
+    return {a[0] / l, a[1] / l, a[2] / l};
+  }
+  std::string px(vec const& p) const { return fmt(cx + r * dot3(p, u)) + "," + fmt(cy - r * dot3(p, v)); }
+  /// The points of the arc from `a` turning about `n` to `b` (or a whole turn when `whole`).
+  std::string arc_points(vec const& a, vec const& b, vec const& n, bool whole = false) const {
+    double angle = whole ? 2 * std::numbers::pi : std::atan2(dot3(cross3(a, b), n), dot3(a, b));
+    if (angle <= 0) angle += 2 * std::numbers::pi;
+    auto side = cross3(n, a);
+    int m = std::max(2, static_cast<int>(angle * 40));
+    std::string s;
+    for (int j = 0; j <= m; ++j) {
+      double t = angle * j / m;
+      s += px({std::cos(t) * a[0] + std::sin(t) * side[0], std::cos(t) * a[1] + std::sin(t) * side[1], std::cos(t) * a[2] + std::sin(t) * side[2]}) + " ";
+    }
+    return s;
+  }
+
+  std::vector<G::sub_hyperplane> read(std::string const& file) {
+    auto m = geometry::io::read_polygons(file);
+    vec sum{0, 0, 0};
+    try {
+      for (auto const& p : m) {
+        std::vector<boolean::loop> loops;
+        auto convert = [&](geometry::io::ring const& ring) {
+          boolean::loop l;
+          for (auto const& c : ring) {
+            l.push_back(boolean::from_lonlat(c.x(), c.y()));
+            auto d = geometry::s2::to_unit(l.back());
+            for (int k = 0; k < 3; ++k) sum[static_cast<std::size_t>(k)] += d[static_cast<std::size_t>(k)];
+          }
+          return l;
+        };
+        boolean::detail::add_arcs(convert(p.outer), edges);
+        for (auto const& h : p.holes) boolean::detail::add_arcs(convert(h), edges);
+      }
+    } catch (boolean::invalid_polygon const& e) {
+      throw usage_error(file + ": " + e.what());
+    }
+    if (edges.empty()) throw usage_error(file + ": no polygon with an area");
+    // One build of every loop, as for one polygon: polygons must not overlap.
+    if (std::abs(bsp::measure(tree_of(edges), true) - boolean::area(boolean::spherical_region(m))) > 1e-9)
+      throw usage_error(file + ": the polygons overlap");
+    face(sum);
+    return edges;
+  }
+  /// Turns the globe so that direction `d` faces the viewer, north up where it can.
+  void face(vec d) {
+    if (dot3(d, d) < 1e-12) d = {1, 0, 0};
+    w = unit(d);
+    vec north{0, 0, 1};
+    if (std::abs(dot3(w, north)) > 0.99) north = {0, 1, 0};
+    u = unit(cross3(north, w));
+    v = cross3(w, u);
+    front = G::hyperplane(D(std::array<rational, 3>{rational(w[0]), rational(w[1]), rational(w[2])}));
+  }
+  void add(sphere_geometry const& o) { edges.insert(edges.end(), o.edges.begin(), o.edges.end()); }
+  static bsp::point_set<G, bool> tree_of(std::vector<G::sub_hyperplane> const& e) {
+    return bsp::build_point_set<G>(e, true, false, bsp::random_order(20261128));
+  }
+  std::string short_text(G::hyperplane const& h) const {
+    auto n = geometry::s2::to_unit(h.n);
+    std::ostringstream s;
+    s << std::fixed << std::setprecision(2) << "the circle ⊥ (" << n[0] << ", " << n[1] << ", " << n[2] << ")";
+    return s.str();
+  }
+  std::string text(G::hyperplane const& h) const {
+    return "the great circle " + linear_text({{h.n[0], "x"}, {h.n[1], "y"}, {h.n[2], "z"}}) + " (positive side where the left side is > 0)";
+  }
+  json region(G::polytope const& c) const {
+    json pts = json::array();
+    for (auto const& p : geometry::s2::vertices(c)) {
+      auto [lon, lat] = boolean::to_lonlat(p);
+      pts.push_back(json::array({lon, lat}));
+    }
+    return {{"vertices", std::move(pts)}, {"area", geometry::s2::area(c)}};
+  }
+  /// The part of a cell facing the viewer, as an SVG polygon's points.
+  std::string outline(G::polytope const& c) const {
+    auto part = geometry::s2::split(c, front).positive;
+    if (!part) return "";
+    if (part->bounds.size() == 1) return arc_points(u, u, w, true); // the whole disk
+    auto vs = geometry::s2::vertices(*part);
+    std::string s;
+    for (std::size_t i = 0, k = vs.size(); i < k; ++i)
+      s += arc_points(geometry::s2::to_unit(vs[i]), geometry::s2::to_unit(vs[(i + 1) % k]), geometry::s2::to_unit(part->bounds[(i + 1) % k].n));
+    return s;
+  }
+  void draw_input(std::ostream& o) const {
+    o << "<circle cx=\"" << cx << "\" cy=\"" << cy << "\" r=\"" << r << "\" fill=\"none\" stroke=\"#999\"/>\n";
+    for (auto const& e : edges) draw_arc(o, e, "#1f4e99", 3, 0.55);
+  }
+  void draw_arc(std::ostream& o, G::sub_hyperplane const& s, char const* colour, double width, double opacity) const {
+    auto part = geometry::s2::split(s, front);
+    if (!part.positive) return;
+    auto e = geometry::s2::endpoints(*part.positive);
+    if (e.size() != 2) return;
+    o << "<polyline fill=\"none\" stroke=\"" << colour << "\" stroke-width=\"" << width << "\" stroke-opacity=\"" << opacity << "\" points=\""
+      << arc_points(geometry::s2::to_unit(e[0]), geometry::s2::to_unit(e[1]), geometry::s2::to_unit(s.support.n)) << "\"/>\n";
+  }
+  void draw_cell(std::ostream& o, G::polytope const& c, std::optional<bool> label, std::string const& name) const {
+    o << "<polygon data-cell=\"" << name << "\" data-label=\"" << (label ? (*label ? "in" : "out") : "pending") << "\" fill=\""
+      << fill_of(label) << "\" stroke=\"#bbb\" stroke-width=\"0.5\" points=\"" << outline(c) << "\"/>\n";
+  }
+  void draw_split(std::ostream& o, G::hyperplane const& h, G::polytope const& cell, long number, bool newest) const {
+    std::optional<G::sub_hyperplane> s = geometry::s2::whole_circle(h);
+    for (auto const& b : cell.bounds) {
+      if (!s) break;
+      auto r2 = geometry::s2::split(*s, b);
+      s = r2.is_coincident() ? std::nullopt : r2.positive;
+    }
+    if (!s) return;
+    draw_arc(o, *s, newest ? "#d62728" : "black", newest ? 3 : 1.5, 1);
+    if (number < 0) return;
+    auto part = geometry::s2::split(*s, front).positive;
+    if (!part) return;
+    auto e = geometry::s2::endpoints(*part);
+    if (e.size() != 2) return;
+    auto a = geometry::s2::to_unit(e[0]), b = geometry::s2::to_unit(e[1]);
+    vec mid = unit({a[0] + b[0], a[1] + b[1], a[2] + b[2]});
+    if (!std::isfinite(mid[0])) mid = a;
+    auto at = px(mid);
+    auto comma = at.find(',');
+    o << "<text font-size=\"12\" x=\"" << at.substr(0, comma) << "\" y=\"" << at.substr(comma + 1) << "\">" << number << "</text>\n";
+  }
+};
+
 // --- Steps ---------------------------------------------------------------
 
 struct step {
@@ -425,7 +569,8 @@ void replay(Geo const& geo, Tree const& t, std::string const& phase, bool show_i
     std::string caption;
     json head{{"phase", phase}};
     if (k == 0) {
-      caption = phase + ": the whole " + (std::string(Geo::name) == "e1" ? "line" : std::string(Geo::name) == "s1" ? "circle" : "plane") +
+      std::string g = Geo::name;
+      caption = phase + ": the whole " + (g == "e1" ? "line" : g == "s1" ? "circle" : g == "s2" ? "sphere" : "plane") +
                 ", one cell to build";
       head["operation"] = "start";
     } else {
@@ -494,7 +639,9 @@ std::string geometry_of(std::string const& given, std::string const& file) {
   if (ext == ".e1") return "e1";
   if (ext == ".s1") return "s1";
   if (ext == ".wkt") return "e2";
-  throw usage_error(file + ": cannot tell the geometry from '" + ext + "' (.e1 intervals, .s1 arcs, .wkt polygons; or give --geometry)");
+  if (ext == ".geojson" || ext == ".json") return "s2";
+  throw usage_error(file + ": cannot tell the geometry from '" + ext +
+                    "' (.e1 intervals, .s1 arcs, .wkt polygons, .geojson spherical polygons; or give --geometry)");
 }
 
 template <class Geo> bsp::point_set<typename Geo::G, bool> tree_of(std::vector<typename Geo::G::sub_hyperplane> const& pieces) {
@@ -542,6 +689,9 @@ template <class Geo> std::vector<step> steps_of(explain_job const& job, json& tr
   } else if constexpr (requires { a.lo; }) {
     a.lo = std::min(a.lo, b.lo), a.hi = std::max(a.hi, b.hi);
     b.lo = a.lo, b.hi = a.hi;
+  } else if constexpr (requires { a.w; }) {
+    a.face({a.w[0] + b.w[0], a.w[1] + b.w[1], a.w[2] + b.w[2]});
+    b.u = a.u, b.v = a.v, b.w = a.w, b.front = a.front;
   }
   auto ta = tree_of<Geo>(pa), tb = tree_of<Geo>(pb);
   whole(a, ta, "a", "operand", "operand A: its tree's cells (blue: inside)", out);
@@ -591,29 +741,63 @@ std::vector<std::pair<point2, point2>> segments_of(std::string const& file) {
   return out;
 }
 
+using plane = boolean::plane_kernel;
+
+/// The segments of a scene seen from an eye, in a depth-order tree, with
+/// the window of their pictures.
+struct segment_scene {
+  point2 eye;
+  std::vector<std::pair<point2, point2>> segments;
+  plane_geometry geo;
+  bsp::depth_order_tree<plane> tree;
+  std::vector<bsp::fragment<plane>> order; ///< the fragments front to back from the eye
+};
+
+segment_scene segment_scene_of(explain_job const& job, json& trace) {
+  segment_scene s;
+  auto c = parse_numbers(job.eye, 2, "--eye", "X,Y");
+  s.eye = point2(c[0], c[1]);
+  s.segments = segments_of(job.input);
+  if (s.segments.empty()) throw usage_error(job.input + ": no segment");
+  if (s.segments.size() > most_pieces)
+    throw usage_error(job.input + ": " + std::to_string(s.segments.size()) + " segments; explain draws at most " +
+                      std::to_string(most_pieces) + " (a picture with more is not readable)");
+  trace["geometry"] = "e2";
+  trace["eye"] = json::array({exact_text(s.eye.x()), exact_text(s.eye.y())});
+  std::vector<point2> points{s.eye};
+  bsp::fragment_list<plane> input;
+  for (std::size_t i = 0; i < s.segments.size(); ++i) {
+    auto piece = geometry::e2::segment(s.segments[i].first, s.segments[i].second);
+    s.geo.edges.push_back(piece);
+    input.push_back({piece, i});
+    points.push_back(s.segments[i].first), points.push_back(s.segments[i].second);
+  }
+  s.geo.frame(points);
+  s.tree = bsp::build_depth_order<plane>(input);
+  bsp::for_each_front_to_back(s.tree, s.eye, [&](bsp::fragment<plane> const& f) { s.order.push_back(f); });
+  return s;
+}
+
+/// A piece's ends, exactly.
+json ends_of(plane::sub_hyperplane const& s) {
+  auto e = geometry::e2::endpoints(s);
+  return json::array({json::array({exact_text(e->first.x()), exact_text(e->first.y())}),
+                      json::array({exact_text(e->second.x()), exact_text(e->second.y())})});
+}
+
+/// The eye, drawn as a red dot.
+void draw_eye(std::ostream& o, plane_geometry const& geo, point2 const& eye) {
+  o << "<circle cx=\"" << fmt(geo.X(geometry::to_double(eye.x()))) << "\" cy=\"" << fmt(geo.Y(geometry::to_double(eye.y())))
+    << "\" r=\"5\" fill=\"#d62728\"/>\n";
+}
+
 /// Depth order from a point: the tree's making, then its fragments front to back.
 std::vector<step> depth_order_steps(explain_job const& job, json& trace) {
-  using K = boolean::plane_kernel;
-  auto c = parse_numbers(job.eye, 2, "--eye", "X,Y");
-  point2 eye(c[0], c[1]);
-  auto segs = segments_of(job.input);
-  if (segs.empty()) throw usage_error(job.input + ": no segment");
-  if (segs.size() > most_pieces)
-    throw usage_error(job.input + ": " + std::to_string(segs.size()) + " segments; explain draws at most " + std::to_string(most_pieces) +
-                      " (a picture with more is not readable)");
-  trace["geometry"] = "e2";
-  trace["eye"] = json::array({exact_text(eye.x()), exact_text(eye.y())});
-  plane_geometry geo;
-  std::vector<point2> points{eye};
-  bsp::fragment_list<K> input;
-  for (std::size_t i = 0; i < segs.size(); ++i) {
-    auto s = geometry::e2::segment(segs[i].first, segs[i].second);
-    geo.edges.push_back(s);
-    input.push_back({s, i});
-    points.push_back(segs[i].first), points.push_back(segs[i].second);
-  }
-  geo.frame(points);
-  auto t = bsp::build_depth_order<K>(input);
+  auto scene = segment_scene_of(job, trace);
+  auto const& geo = scene.geo;
+  auto const& t = scene.tree;
+  auto const& order = scene.order;
+  auto const& eye = scene.eye;
   std::vector<step> out;
   // While building, each placed node's fragments are drawn over its line.
   auto at_nodes = [&](std::ostream& o, std::size_t placed) {
@@ -622,13 +806,6 @@ std::vector<step> depth_order_steps(explain_job const& job, json& trace) {
         geo.draw_segment(o, f.piece, "#333333", "data-fragment=\"" + std::to_string(f.id) + "\"");
   };
   replay(geo, t, "build", true, out, at_nodes);
-  std::vector<bsp::fragment<K>> order;
-  bsp::for_each_front_to_back(t, eye, [&](bsp::fragment<K> const& f) { order.push_back(f); });
-  auto endpoints = [](K::sub_hyperplane const& s) {
-    auto e = geometry::e2::endpoints(s);
-    return json::array({json::array({exact_text(e->first.x()), exact_text(e->first.y())}),
-                        json::array({exact_text(e->second.x()), exact_text(e->second.y())})});
-  };
   json listed = json::array();
   for (std::size_t k = 1; k <= order.size(); ++k) {
     auto drawn = [&](std::ostream& o, std::size_t) {
@@ -640,21 +817,109 @@ std::vector<step> depth_order_steps(explain_job const& job, json& trace) {
           o << "<text font-size=\"11\" font-weight=\"bold\" x=\"" << fmt((geo.X(geometry::to_double(e->first.x())) + geo.X(geometry::to_double(e->second.x()))) / 2 + 4)
             << "\" y=\"" << fmt((geo.Y(geometry::to_double(e->first.y())) + geo.Y(geometry::to_double(e->second.y()))) / 2 - 4) << "\">" << r
             << "</text>\n";
-      o << "<circle cx=\"" << fmt(geo.X(geometry::to_double(eye.x()))) << "\" cy=\"" << fmt(geo.Y(geometry::to_double(eye.y())))
-        << "\" r=\"5\" fill=\"#d62728\"/>\n";
+      draw_eye(o, geo, eye);
     };
     auto const& f = order[k - 1];
     std::string caption = "front to back, step " + std::to_string(k) + ": number " + std::to_string(k - 1) + " is (part of) input segment " +
                           std::to_string(f.id);
     auto s = picture(geo, t, t.interior_count(), false, false, caption, drawn);
-    json head{{"phase", "front to back"}, {"operation", "emit"}, {"rank", k - 1}, {"segment", f.id}, {"piece", endpoints(f.piece)}};
+    json head{{"phase", "front to back"}, {"operation", "emit"}, {"rank", k - 1}, {"segment", f.id}, {"piece", ends_of(f.piece)}};
     head.update(s.trace);
     head["caption"] = caption;
     out.push_back({std::move(head), std::move(s.svg)});
-    listed.push_back({{"rank", k - 1}, {"segment", f.id}, {"piece", endpoints(f.piece)}});
+    listed.push_back({{"rank", k - 1}, {"segment", f.id}, {"piece", ends_of(f.piece)}});
   }
   trace["result"] = {{"interior_nodes", t.interior_count()}, {"cells", bsp::cells(t).size()}, {"fragments", order.size()},
                      {"order", std::move(listed)}};
+  return out;
+}
+
+/// The region of a view drawn in the plane: what each arc sees, from the eye
+/// to its wall, and the unbounded arcs as wedges out of the picture.
+void draw_region(std::ostream& o, plane_geometry const& geo, svm::visibility_region<rational> const& r,
+                 svm::wall_scene<rational> const& walls) {
+  double ex = geo.X(geometry::to_double(r.eye.x())), ey = geo.Y(geometry::to_double(r.eye.y()));
+  double far = 4 * (geo.width + geo.height);
+  auto angle = [](geometry::s1::point<rational> const& d) { return std::atan2(geometry::to_double(d[1]), geometry::to_double(d[0])); };
+  for (auto const& a : r.arcs) {
+    if (a.wall == svm::behind_boundary) continue;
+    // Seen arcs get an outline of their own colour, so that neighbours show no seam.
+    o << "<polygon fill=\"#ffe98a\" " << (a.wall == svm::no_wall ? "fill-opacity=\"0.45\"" : "stroke=\"#ffe98a\" stroke-width=\"0.8\"")
+      << " data-wall=\"" << a.wall << "\" points=\"" << fmt(ex) << ',' << fmt(ey);
+    if (a.wall == svm::no_wall) {
+      double t0 = a.whole ? 0 : angle(a.start()), t1 = a.whole ? 2 * std::numbers::pi : angle(a.end());
+      while (t1 <= t0) t1 += 2 * std::numbers::pi;
+      for (int k = 0; k <= 16; ++k) {
+        double t = t0 + (t1 - t0) * k / 16;
+        o << ' ' << fmt(ex + far * std::cos(t)) << ',' << fmt(ey - far * std::sin(t));
+      }
+    } else {
+      auto w = walls.wall(static_cast<std::size_t>(a.wall));
+      for (auto const& p : {svm::hit_point(r.eye, a.start(), w), svm::hit_point(r.eye, a.end(), w)})
+        o << ' ' << fmt(geo.X(geometry::to_double(p.x()))) << ',' << fmt(geo.Y(geometry::to_double(p.y())));
+    }
+    o << "\"/>\n";
+  }
+}
+
+/// 2D visibility: the pieces arrive front to back from the eye, and what
+/// they leave visible grows; the last step is the library's region.
+std::vector<step> visibility2d_steps(explain_job const& job, json& trace) {
+  auto scene = segment_scene_of(job, trace);
+  auto const& geo = scene.geo;
+  auto const& order = scene.order;
+  for (std::size_t i = 0; i < scene.segments.size(); ++i) {
+    auto const& [a, b] = scene.segments[i];
+    auto side = geometry::e2::side(geometry::e2::line_through(a, b), scene.eye);
+    bool between = (a.x() - scene.eye.x()) * (b.x() - scene.eye.x()) + (a.y() - scene.eye.y()) * (b.y() - scene.eye.y()) <= 0;
+    if (side == geometry::oriented_side::on && between)
+      throw usage_error("--eye: on segment " + std::to_string(i) + " of " + job.input +
+                        "; explain shows eyes off the walls (genbsp visibility2d takes eyes on them)");
+  }
+  // Each step's region is the view of the pieces arrived so far: arriving
+  // front to back, no later piece hides what an earlier one left visible.
+  std::vector<step> out;
+  svm::wall_scene<rational> arrived;
+  auto arcs_json = [&](svm::visibility_region<rational> const& r) {
+    json arcs = json::array();
+    for (auto const& a : r.arcs) {
+      auto dir = [](geometry::s1::point<rational> const& d) { return json::array({exact_text(d[0]), exact_text(d[1])}); };
+      arcs.push_back({{"from", a.whole ? json(nullptr) : dir(a.start())},
+                      {"to", a.whole ? json(nullptr) : dir(a.end())},
+                      {"segment", a.wall >= 0 ? json(order[static_cast<std::size_t>(a.wall)].id) : json(nullptr)}});
+    }
+    return arcs;
+  };
+  svm::visibility_region<rational> region;
+  for (std::size_t k = 0; k <= order.size(); ++k) {
+    if (k > 0) {
+      auto e = geometry::e2::endpoints(order[k - 1].piece);
+      arrived.segments.push_back({e->first, e->second});
+    }
+    region = svm::visibility(arrived, scene.eye);
+    bool seen = k > 0 && std::any_of(region.arcs.begin(), region.arcs.end(), [&](auto const& a) { return a.wall == static_cast<std::int64_t>(k - 1); });
+    std::string caption = k == 0 ? "visibility: no piece yet, every direction free"
+                                 : "visibility, step " + std::to_string(k) + ": piece " + std::to_string(k - 1) + " (segment " +
+                                       std::to_string(order[k - 1].id) + ") arrives, " + (seen ? "partly visible" : "hidden");
+    auto drawn = [&](std::ostream& o, std::size_t) {
+      draw_region(o, geo, region, arrived);
+      for (std::size_t r = 0; r < order.size(); ++r)
+        geo.draw_segment(o, order[r].piece, r + 1 == k ? "#d62728" : r < k ? "#333333" : "#cccccc",
+                         "data-rank=\"" + (r < k ? std::to_string(r) : std::string("later")) + "\"");
+      draw_eye(o, geo, scene.eye);
+    };
+    // The tree's cells are left out: the picture is of the view, not of a tree.
+    bsp::depth_order_tree<plane> none;
+    auto s = picture(geo, none, 0, false, false, caption, drawn);
+    json head{{"phase", "visibility"}, {"operation", k == 0 ? "start" : "insert"}};
+    if (k > 0) head["piece"] = ends_of(order[k - 1].piece), head["segment"] = order[k - 1].id, head["visible"] = seen;
+    head["arcs"] = arcs_json(region);
+    head["caption"] = caption;
+    out.push_back({std::move(head), std::move(s.svg)});
+  }
+  json result{{"fragments", order.size()}, {"arcs", region.arcs.size()}, {"bounded", region.bounded()}};
+  if (auto a = svm::area(region, arrived)) result["area"] = exact_text(*a);
+  trace["result"] = std::move(result);
   return out;
 }
 
@@ -664,12 +929,14 @@ void explain_job::add_to(CLI::App& app) {
   command = app.add_subcommand("explain", "an algorithm of the tree step by step on a small input: numbered SVG pictures, index.html, trace.json");
   command->require_subcommand(1);
   auto common = [&](CLI::App* c) {
-    c->add_option("--geometry", geometry, "e1 (intervals 'A B' per line), s1 (arcs 'X1,Y1 X2,Y2' per line) or e2 (WKT polygons); default from the extension")
-        ->check(CLI::IsMember({"e1", "s1", "e2"}));
+    c->add_option("--geometry", geometry,
+                  "e1 (intervals 'A B' per line), s1 (arcs 'X1,Y1 X2,Y2' per line), e2 (WKT or GeoJSON polygons) or s2 (GeoJSON or WKT "
+                  "polygons in longitude and latitude); default from the extension")
+        ->check(CLI::IsMember({"e1", "s1", "e2", "s2"}));
     c->add_option("-o,--output", output, "the folder to write (made if missing; its earlier pictures are replaced)")->required();
   };
   build = command->add_subcommand("build", "building a point-set tree from a boundary (Thibault and Naylor), one node at a time");
-  build->add_option("input", input, "the region: .e1, .s1 or .wkt")->required();
+  build->add_option("input", input, "the region: .e1, .s1, .wkt or .geojson")->required();
   common(build);
   merge = command->add_subcommand("merge", "a Boolean operation by merging two trees (Naylor, Amanatides and Thibault), then reducing");
   merge->add_option("a", input, "the first region")->required();
@@ -680,20 +947,29 @@ void explain_job::add_to(CLI::App& app) {
   depth->add_option("input", input, "the segments: polygons' edges and line strings (.wkt or GeoJSON)")->required();
   depth->add_option("--eye", eye, "the eye X,Y, read exactly")->required();
   depth->add_option("-o,--output", output, "the folder to write (made if missing; its earlier pictures are replaced)")->required();
+  seen = command->add_subcommand("visibility2d", "the visibility region of an eye among segments, growing as they arrive front to back");
+  seen->add_option("input", input, "the walls: polygons' edges and line strings (.wkt or GeoJSON)")->required();
+  seen->add_option("--eye", eye, "the eye X,Y, read exactly, on no wall")->required();
+  seen->add_option("-o,--output", output, "the folder to write (made if missing; its earlier pictures are replaced)")->required();
 }
 
 void explain_job::run() const {
-  json trace{{"genbsp", version()}, {"command", *build ? "build" : *merge ? "merge" : "depth-order"}};
+  json trace{{"genbsp", version()}, {"command", *build ? "build" : *merge ? "merge" : *depth ? "depth-order" : "visibility2d"}};
   trace["inputs"] = *merge ? json::array({input, other}) : json::array({input});
   if (*merge) trace["op"] = op;
   std::vector<step> steps;
   if (*depth) {
     steps = depth_order_steps(*this, trace);
+  } else if (*seen) {
+    steps = visibility2d_steps(*this, trace);
   } else {
     std::string g = geometry_of(geometry, input);
     if (*merge && geometry.empty() && geometry_of("", other) != g)
       throw usage_error(input + ", " + other + ": the two inputs are of different geometries");
-    steps = g == "e1" ? steps_of<line_geometry>(*this, trace) : g == "s1" ? steps_of<circle_geometry>(*this, trace) : steps_of<plane_geometry>(*this, trace);
+    steps = g == "e1"   ? steps_of<line_geometry>(*this, trace)
+            : g == "s1" ? steps_of<circle_geometry>(*this, trace)
+            : g == "s2" ? steps_of<sphere_geometry>(*this, trace)
+                        : steps_of<plane_geometry>(*this, trace);
   }
   // Written only once everything is made; earlier pictures in the folder go first.
   std::error_code ec;
@@ -719,7 +995,8 @@ void explain_job::run() const {
   write_file((fs::path(output) / "trace.json").string(), trace.dump(1) + "\n");
   std::string title = std::string("genbsp explain ") + (*build   ? "build " + input
                                                         : *merge ? "merge " + input + " " + other + " --op " + op
-                                                                 : "depth-order " + input + " --eye " + eye);
+                                                        : *depth ? "depth-order " + input + " --eye " + eye
+                                                                 : "visibility2d " + input + " --eye " + eye);
   write_file((fs::path(output) / "index.html").string(), index_html(files, captions, title));
   out() << json{{"genbsp", version()}, {"steps", steps.size()}, {"output", output}}.dump() << "\n";
 }

@@ -17,6 +17,7 @@ struct explain_job {
   CLI::App* build = nullptr;
   CLI::App* merge = nullptr;
   CLI::App* depth = nullptr;
+  CLI::App* seen = nullptr;
   void add_to(CLI::App& app);
   void run() const;
 };
