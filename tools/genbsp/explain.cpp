@@ -85,6 +85,23 @@ template <class F> void for_each_pair(std::string const& file, std::string const
 /// Colours of a cell: inside, outside, still to be built.
 char const* fill_of(std::optional<bool> label) { return !label ? "#d9d9d9" : *label ? "#7fb2e5" : "#ffffff"; }
 
+/// The attributes that tie a drawn cell to its trace entry: its node and its label.
+std::string cell_attributes(std::string const& name, std::optional<bool> label) {
+  return "data-cell=\"" + name + "\" data-label=\"" + (label ? (*label ? "in" : "out") : "pending") + "\"";
+}
+
+/// The part of hyperplane `h` inside the convex cell `c` (the intersection of
+/// the positive sides of its bounds), where a node's hyperplane is drawn.
+template <class G> std::optional<typename G::sub_hyperplane> section_in(typename G::hyperplane const& h, typename G::polytope const& c) {
+  std::optional<typename G::sub_hyperplane> s = G::whole(h);
+  for (auto const& b : c.bounds) {
+    if (!s) break;
+    auto r = G::split(*s, b);
+    s = r.is_coincident() ? std::nullopt : r.positive;
+  }
+  return s;
+}
+
 /// E1: intervals of the line.
 struct line_geometry {
   using G = geometry::e1::exact_kernel;
@@ -140,7 +157,7 @@ struct line_geometry {
   void draw_cell(std::ostream& o, G::polytope const& c, std::optional<bool> label, std::string const& name) const {
     auto [a, b] = geometry::e1::ends(c);
     double x0 = a ? X(a->convert_to<double>()) : 0, x1 = b ? X(b->convert_to<double>()) : width;
-    o << "<rect data-cell=\"" << name << "\" data-label=\"" << (label ? (*label ? "in" : "out") : "pending") << "\" fill=\""
+    o << "<rect " << cell_attributes(name, label) << " fill=\""
       << fill_of(label) << "\" stroke=\"#555\" x=\"" << fmt(x0) << "\" y=\"60\" width=\"" << fmt(std::max(x1 - x0, 0.0))
       << "\" height=\"30\"/>\n";
   }
@@ -233,8 +250,7 @@ struct circle_geometry {
     auto e = geometry::s1::endpoints(c);
     double a = e.empty() ? 0 : angle(e[0]), b = e.empty() ? 2 * std::numbers::pi : angle(e[1]);
     if (c.bounds.size() == 1) b = a + std::numbers::pi;
-    o << "<path data-cell=\"" << name << "\" data-label=\"" << (label ? (*label ? "in" : "out") : "pending")
-      << "\" fill=\"none\" stroke=\"" << (label && !*label ? "#eeeeee" : fill_of(label)) << "\" stroke-width=\"16\" d=\""
+    o << "<path " << cell_attributes(name, label) << " fill=\"none\" stroke=\"" << (label && !*label ? "#eeeeee" : fill_of(label)) << "\" stroke-width=\"16\" d=\""
       << arc_path(a, e.empty() ? a + 2 * std::numbers::pi : b, r) << "\"/>\n";
   }
   void draw_split(std::ostream& o, G::hyperplane const& h, G::polytope const&, long number, bool newest) const {
@@ -331,20 +347,14 @@ struct plane_geometry {
   }
   void draw_cell(std::ostream& o, G::polytope const& c, std::optional<bool> label, std::string const& name) const {
     auto v = geometry::e2::vertices(geometry::e2::detail::clip_to(c, view));
-    o << "<polygon data-cell=\"" << name << "\" data-label=\"" << (label ? (*label ? "in" : "out") : "pending") << "\" fill=\""
+    o << "<polygon " << cell_attributes(name, label) << " fill=\""
       << fill_of(label) << "\" stroke=\"#bbb\" stroke-width=\"0.5\" points=\"";
     if (v)
       for (auto const& p : *v) o << fmt(X(geometry::to_double(p.x()))) << ',' << fmt(Y(geometry::to_double(p.y()))) << ' ';
     o << "\"/>\n";
   }
   void draw_split(std::ostream& o, G::hyperplane const& h, G::polytope const& cell, long number, bool newest) const {
-    auto c = geometry::e2::detail::clip_to(cell, view);
-    std::optional<G::sub_hyperplane> s = geometry::e2::whole_line(h);
-    for (auto const& b : c.bounds) {
-      if (!s) break;
-      auto r = geometry::e2::split(*s, b);
-      s = r.is_coincident() ? std::nullopt : r.positive;
-    }
+    auto s = section_in<G>(h, geometry::e2::detail::clip_to(cell, view));
     if (!s) return;
     auto e = geometry::e2::endpoints(*s);
     if (!e) return;
@@ -485,16 +495,11 @@ struct sphere_geometry {
       << arc_points(geometry::s2::to_unit(e[0]), geometry::s2::to_unit(e[1]), geometry::s2::to_unit(s.support.n)) << "\"/>\n";
   }
   void draw_cell(std::ostream& o, G::polytope const& c, std::optional<bool> label, std::string const& name) const {
-    o << "<polygon data-cell=\"" << name << "\" data-label=\"" << (label ? (*label ? "in" : "out") : "pending") << "\" fill=\""
+    o << "<polygon " << cell_attributes(name, label) << " fill=\""
       << fill_of(label) << "\" stroke=\"#bbb\" stroke-width=\"0.5\" points=\"" << outline(c) << "\"/>\n";
   }
   void draw_split(std::ostream& o, G::hyperplane const& h, G::polytope const& cell, long number, bool newest) const {
-    std::optional<G::sub_hyperplane> s = geometry::s2::whole_circle(h);
-    for (auto const& b : cell.bounds) {
-      if (!s) break;
-      auto r2 = geometry::s2::split(*s, b);
-      s = r2.is_coincident() ? std::nullopt : r2.positive;
-    }
+    auto s = section_in<G>(h, cell);
     if (!s) return;
     draw_arc(o, *s, newest ? "#d62728" : "black", newest ? 3 : 1.5, 1);
     if (number < 0) return;
@@ -519,6 +524,16 @@ struct step {
 };
 
 /// The picture and trace entry of tree `t` after `placed` of its nodes.
+/// A picture: `body` (in the geometry's coordinates) under a caption.
+template <class Geo> std::string framed(Geo const& geo, std::string const& caption, std::string const& body) {
+  std::ostringstream o;
+  double w = geo.width, h = geo.height + 28;
+  o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << fmt(w) << "\" height=\"" << fmt(h) << "\" viewBox=\"0 0 " << fmt(w) << ' '
+    << fmt(h) << "\" font-family=\"sans-serif\">\n<title>" << html_escape(caption) << "</title>\n<g transform=\"translate(0,28)\">\n"
+    << body << "</g>\n<text font-size=\"12\" x=\"6\" y=\"18\">" << html_escape(caption) << "</text>\n</svg>\n";
+  return o.str();
+}
+
 /// A leaf's label in a picture: a point set's own, and outside (no
 /// fragment) for a depth-order tree, whose leaves have none.
 template <class Tree> bool leaf_label(Tree const& t, bsp::node_id n) {
@@ -540,9 +555,6 @@ step picture(Geo const& geo, Tree const& t, std::size_t placed, bool replaying, 
              More more = {}) {
   auto state = bsp::state_after(t, placed);
   std::ostringstream o;
-  double w = geo.width, h = geo.height + 28;
-  o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << fmt(w) << "\" height=\"" << fmt(h) << "\" viewBox=\"0 0 " << fmt(w) << ' '
-    << fmt(h) << "\" font-family=\"sans-serif\">\n<title>" << html_escape(caption) << "</title>\n<g transform=\"translate(0,28)\">\n";
   json cells = json::array();
   for (auto const& c : state.cells) {
     std::optional<bool> label;
@@ -557,8 +569,7 @@ step picture(Geo const& geo, Tree const& t, std::size_t placed, bool replaying, 
   for (auto const& [n, cell] : state.splits)
     geo.draw_split(o, t.splitter(n), cell, replaying ? static_cast<long>(n.index()) : -1, replaying && n.index() + 1 == placed);
   more(o, placed);
-  o << "</g>\n<text font-size=\"12\" x=\"6\" y=\"18\">" << html_escape(caption) << "</text>\n</svg>\n";
-  return {json{{"cells", std::move(cells)}}, o.str()};
+  return {json{{"cells", std::move(cells)}}, framed(geo, caption, o.str())};
 }
 
 /// Every step of the tree `t`'s making: the whole space, then one node at a time.
@@ -878,6 +889,11 @@ std::vector<step> visibility2d_steps(explain_job const& job, json& trace) {
   }
   // Each step's region is the view of the pieces arrived so far: arriving
   // front to back, no later piece hides what an earlier one left visible.
+  // A piece's ends are constructed (where another wall's line cut it) and
+  // feed the view's constructions here, which the library never does; it is
+  // exact, on at most 200 pieces, but not of bounded degree.  The bounded
+  // form: the library's view of the whole input, each arc shown from the
+  // step of the first piece that sees it.
   std::vector<step> out;
   svm::wall_scene<rational> arrived;
   auto arcs_json = [&](svm::visibility_region<rational> const& r) {
@@ -908,14 +924,14 @@ std::vector<step> visibility2d_steps(explain_job const& job, json& trace) {
                          "data-rank=\"" + (r < k ? std::to_string(r) : std::string("later")) + "\"");
       draw_eye(o, geo, scene.eye);
     };
-    // The tree's cells are left out: the picture is of the view, not of a tree.
-    bsp::depth_order_tree<plane> none;
-    auto s = picture(geo, none, 0, false, false, caption, drawn);
+    // The picture is of the view, not of a tree: no cells.
+    std::ostringstream body;
+    drawn(body, 0);
     json head{{"phase", "visibility"}, {"operation", k == 0 ? "start" : "insert"}};
     if (k > 0) head["piece"] = ends_of(order[k - 1].piece), head["segment"] = order[k - 1].id, head["visible"] = seen;
     head["arcs"] = arcs_json(region);
     head["caption"] = caption;
-    out.push_back({std::move(head), std::move(s.svg)});
+    out.push_back({std::move(head), framed(geo, caption, body.str())});
   }
   json result{{"fragments", order.size()}, {"arcs", region.arcs.size()}, {"bounded", region.bounded()}};
   if (auto a = svm::area(region, arrived)) result["area"] = exact_text(*a);
