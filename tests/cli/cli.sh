@@ -712,7 +712,7 @@ assert len(steps) == trace["result"]["fragments"] + 1 == len([f for f in os.list
 for s in steps:
     ET.parse(os.path.join(d, s["picture"]))
 assert F(trace["result"]["area"]) == F(json.load(open(sys.argv[2]))["area_exact"])
-assert trace["result"]["bounded"] and steps[0]["arcs"] == [{"from": None, "to": None, "segment": None}]
+assert trace["result"]["bounded"] and steps[0]["arcs"] == [{"from": None, "to": None, "segment": None, "rank": None}]
 def angle(p): return math.atan2(float(F(p[1])), float(F(p[0])))
 def seen(arcs, t):   # the segment seen in direction t (radians), None for nothing
     for a in arcs:

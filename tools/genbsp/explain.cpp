@@ -20,12 +20,15 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <numbers>
+#include <optional>
 #include <sstream>
+#include <tuple>
 #include <type_traits>
 
 namespace genbsp_tool {
@@ -845,29 +848,113 @@ std::vector<step> depth_order_steps(explain_job const& job, json& trace) {
   return out;
 }
 
-/// The region of a view drawn in the plane: what each arc sees, from the eye
-/// to its wall, and the unbounded arcs as wedges out of the picture.
-void draw_region(std::ostream& o, plane_geometry const& geo, svm::visibility_region<rational> const& r,
-                 svm::wall_scene<rational> const& walls) {
-  double ex = geo.X(geometry::to_double(r.eye.x())), ey = geo.Y(geometry::to_double(r.eye.y()));
+/// A piece of a view at one step: the directions from `from` to `to`
+/// (counter-clockwise), in which input segment `segment` is seen between
+/// `near_from` and `near_to`, through the piece of rank `rank`; or nothing
+/// (`segment` empty), the whole circle when `whole`.
+struct view_piece {
+  std::array<rational, 2> from, to;
+  std::optional<std::size_t> segment, rank;
+  point2 near_from, near_to;
+  bool whole = false;
+};
+
+/// The final view split where its walls' pieces meet: each wall's arc of
+/// the library's view (`svm::visibility` of the input segments, bounded
+/// degree) cut at the ends of the pieces the depth order made of that wall,
+/// each part labelled with its piece's rank.  The cut points are made for
+/// the picture only; nothing is computed from them.
+std::vector<view_piece> ranked_view(segment_scene const& s, svm::visibility_region<rational> const& region, svm::wall_scene<rational> const& walls) {
+  std::vector<view_piece> out;
+  auto direction = [&](point2 const& p) { return std::array<rational, 2>{p.x() - s.eye.x(), p.y() - s.eye.y()}; };
+  for (auto const& a : region.arcs) {
+    if (a.wall < 0) {
+      view_piece v;
+      v.whole = a.whole;
+      if (!a.whole) v.from = {a.start()[0], a.start()[1]}, v.to = {a.end()[0], a.end()[1]};
+      out.push_back(v);
+      continue;
+    }
+    auto w = static_cast<std::size_t>(a.wall);
+    auto [p, q] = walls.wall(w);
+    auto along = [&](point2 const& x) { return ((x.x() - p.x()) * (q.x() - p.x()) + (x.y() - p.y()) * (q.y() - p.y())) / ((q.x() - p.x()) * (q.x() - p.x()) + (q.y() - p.y()) * (q.y() - p.y())); };
+    auto at = [&](rational const& t) { return point2(p.x() + t * (q.x() - p.x()), p.y() + t * (q.y() - p.y())); };
+    rational t0 = along(svm::hit_point(s.eye, a.start(), walls.wall(w))), t1 = along(svm::hit_point(s.eye, a.end(), walls.wall(w)));
+    // The wall's pieces as parameter ranges, with their ranks.
+    std::vector<std::tuple<rational, rational, std::size_t>> pieces;
+    std::vector<rational> cuts{t0, t1};
+    for (std::size_t r = 0; r < s.order.size(); ++r)
+      if (s.order[r].id == w) {
+        auto e = geometry::e2::endpoints(s.order[r].piece);
+        auto u = along(e->first), v = along(e->second);
+        if (v < u) std::swap(u, v);
+        pieces.emplace_back(u, v, r);
+        for (auto const& c : {u, v})
+          if ((c - t0) * (c - t1) < 0) cuts.push_back(c);
+      }
+    std::sort(cuts.begin(), cuts.end());
+    if (t1 < t0) std::reverse(cuts.begin(), cuts.end());
+    for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
+      rational mid = (cuts[i] + cuts[i + 1]) / 2;
+      view_piece v;
+      v.segment = w;
+      for (auto const& [u, x, r] : pieces)
+        if (u <= mid && mid <= x) v.rank = r;
+      if (!v.rank) throw std::logic_error("explain visibility2d: a seen part of a wall in none of its pieces");
+      v.near_from = at(cuts[i]), v.near_to = at(cuts[i + 1]);
+      // The arc's own ends are input-derived directions; the cuts between are not.
+      v.from = i == 0 ? std::array<rational, 2>{a.start()[0], a.start()[1]} : direction(v.near_from);
+      v.to = i + 2 == cuts.size() ? std::array<rational, 2>{a.end()[0], a.end()[1]} : direction(v.near_to);
+      out.push_back(v);
+    }
+  }
+  return out;
+}
+
+/// The view after the first `k` pieces front to back: the final view's
+/// parts seen through pieces of rank below `k`, nothing elsewhere.  A later
+/// piece never hides an earlier one (that is what front to back means), so
+/// no piece of rank below `k` lies where the final view sees a later one.
+std::vector<view_piece> view_after(std::vector<view_piece> const& ranked, std::size_t k) {
+  std::vector<view_piece> out;
+  for (auto v : ranked) {
+    if (v.rank && *v.rank >= k) v.segment.reset(), v.rank.reset();
+    if (!v.segment && !out.empty() && !out.back().segment && !out.back().whole) {
+      out.back().to = v.to;
+      continue;
+    }
+    out.push_back(v);
+  }
+  // The first and the last meet across the start direction.
+  if (out.size() > 1 && !out.front().segment && !out.back().segment) {
+    out.front().from = out.back().from;
+    out.pop_back();
+  }
+  if (out.size() == 1 && !out.front().segment) out.front().whole = true;
+  return out;
+}
+
+/// A view drawn in the plane: what each part sees, from the eye to its wall,
+/// and the unbounded parts as wedges out of the picture.
+void draw_view(std::ostream& o, plane_geometry const& geo, point2 const& eye, std::vector<view_piece> const& view) {
+  double ex = geo.X(geometry::to_double(eye.x())), ey = geo.Y(geometry::to_double(eye.y()));
   double far = 4 * (geo.width + geo.height);
-  auto angle = [](geometry::s1::point<rational> const& d) { return std::atan2(geometry::to_double(d[1]), geometry::to_double(d[0])); };
-  for (auto const& a : r.arcs) {
-    if (a.wall == svm::behind_boundary) continue;
-    // Seen arcs get an outline of their own colour, so that neighbours show no seam.
-    o << "<polygon fill=\"#ffe98a\" " << (a.wall == svm::no_wall ? "fill-opacity=\"0.45\"" : "stroke=\"#ffe98a\" stroke-width=\"0.8\"")
-      << " data-wall=\"" << a.wall << "\" points=\"" << fmt(ex) << ',' << fmt(ey);
-    if (a.wall == svm::no_wall) {
-      double t0 = a.whole ? 0 : angle(a.start()), t1 = a.whole ? 2 * std::numbers::pi : angle(a.end());
+  auto angle = [](std::array<rational, 2> const& d) { return std::atan2(geometry::to_double(d[1]), geometry::to_double(d[0])); };
+  for (auto const& v : view) {
+    // Seen parts get an outline of their own colour, so that neighbours show no seam.
+    o << "<polygon fill=\"#ffe98a\" "
+      << (v.segment ? "stroke=\"#ffe98a\" stroke-width=\"0.8\" data-segment=\"" + std::to_string(*v.segment) + "\" data-rank=\"" + std::to_string(*v.rank) + "\""
+                    : std::string("fill-opacity=\"0.45\" data-segment=\"none\""))
+      << " points=\"" << fmt(ex) << ',' << fmt(ey);
+    if (!v.segment) {
+      double t0 = v.whole ? 0 : angle(v.from), t1 = v.whole ? 2 * std::numbers::pi : angle(v.to);
       while (t1 <= t0) t1 += 2 * std::numbers::pi;
       for (int k = 0; k <= 16; ++k) {
         double t = t0 + (t1 - t0) * k / 16;
         o << ' ' << fmt(ex + far * std::cos(t)) << ',' << fmt(ey - far * std::sin(t));
       }
     } else {
-      auto w = walls.wall(static_cast<std::size_t>(a.wall));
-      for (auto const& p : {svm::hit_point(r.eye, a.start(), w), svm::hit_point(r.eye, a.end(), w)})
-        o << ' ' << fmt(geo.X(geometry::to_double(p.x()))) << ',' << fmt(geo.Y(geometry::to_double(p.y())));
+      for (auto const& p : {v.near_from, v.near_to}) o << ' ' << fmt(geo.X(geometry::to_double(p.x()))) << ',' << fmt(geo.Y(geometry::to_double(p.y())));
     }
     o << "\"/>\n";
   }
@@ -887,54 +974,41 @@ std::vector<step> visibility2d_steps(explain_job const& job, json& trace) {
       throw usage_error("--eye: on segment " + std::to_string(i) + " of " + job.input +
                         "; explain shows eyes off the walls (genbsp visibility2d takes eyes on them)");
   }
-  // Each step's region is the view of the pieces arrived so far: arriving
-  // front to back, no later piece hides what an earlier one left visible.
-  // A piece's ends are constructed (where another wall's line cut it) and
-  // feed the view's constructions here, which the library never does; it is
-  // exact, on at most 200 pieces, but not of bounded degree.  The bounded
-  // form: the library's view of the whole input, each arc shown from the
-  // step of the first piece that sees it.
+  // The library's view of the input segments, once; each step shows the
+  // part of it seen through the pieces arrived so far.
+  svm::wall_scene<rational> walls;
+  for (auto const& [a, b] : scene.segments) walls.segments.push_back({a, b});
+  auto region = svm::visibility(walls, scene.eye);
+  auto ranked = ranked_view(scene, region, walls);
+  auto exact_pair = [](std::array<rational, 2> const& d) { return json::array({exact_text(d[0]), exact_text(d[1])}); };
   std::vector<step> out;
-  svm::wall_scene<rational> arrived;
-  auto arcs_json = [&](svm::visibility_region<rational> const& r) {
-    json arcs = json::array();
-    for (auto const& a : r.arcs) {
-      auto dir = [](geometry::s1::point<rational> const& d) { return json::array({exact_text(d[0]), exact_text(d[1])}); };
-      arcs.push_back({{"from", a.whole ? json(nullptr) : dir(a.start())},
-                      {"to", a.whole ? json(nullptr) : dir(a.end())},
-                      {"segment", a.wall >= 0 ? json(order[static_cast<std::size_t>(a.wall)].id) : json(nullptr)}});
-    }
-    return arcs;
-  };
-  svm::visibility_region<rational> region;
   for (std::size_t k = 0; k <= order.size(); ++k) {
-    if (k > 0) {
-      auto e = geometry::e2::endpoints(order[k - 1].piece);
-      arrived.segments.push_back({e->first, e->second});
-    }
-    region = svm::visibility(arrived, scene.eye);
-    bool seen = k > 0 && std::any_of(region.arcs.begin(), region.arcs.end(), [&](auto const& a) { return a.wall == static_cast<std::int64_t>(k - 1); });
+    auto view = view_after(ranked, k);
+    json arcs = json::array();
+    for (auto const& v : view)
+      arcs.push_back({{"from", v.whole ? json(nullptr) : exact_pair(v.from)},
+                      {"to", v.whole ? json(nullptr) : exact_pair(v.to)},
+                      {"segment", v.segment ? json(*v.segment) : json(nullptr)},
+                      {"rank", v.rank ? json(*v.rank) : json(nullptr)}});
+    bool seen = k > 0 && std::any_of(view.begin(), view.end(), [&](auto const& v) { return v.rank == k - 1; });
     std::string caption = k == 0 ? "visibility: no piece yet, every direction free"
                                  : "visibility, step " + std::to_string(k) + ": piece " + std::to_string(k - 1) + " (segment " +
                                        std::to_string(order[k - 1].id) + ") arrives, " + (seen ? "partly visible" : "hidden");
-    auto drawn = [&](std::ostream& o, std::size_t) {
-      draw_region(o, geo, region, arrived);
-      for (std::size_t r = 0; r < order.size(); ++r)
-        geo.draw_segment(o, order[r].piece, r + 1 == k ? "#d62728" : r < k ? "#333333" : "#cccccc",
-                         "data-rank=\"" + (r < k ? std::to_string(r) : std::string("later")) + "\"");
-      draw_eye(o, geo, scene.eye);
-    };
     // The picture is of the view, not of a tree: no cells.
     std::ostringstream body;
-    drawn(body, 0);
+    draw_view(body, geo, scene.eye, view);
+    for (std::size_t r = 0; r < order.size(); ++r)
+      geo.draw_segment(body, order[r].piece, r + 1 == k ? "#d62728" : r < k ? "#333333" : "#cccccc",
+                       "data-piece=\"" + (r < k ? std::to_string(r) : std::string("later")) + "\"");
+    draw_eye(body, geo, scene.eye);
     json head{{"phase", "visibility"}, {"operation", k == 0 ? "start" : "insert"}};
     if (k > 0) head["piece"] = ends_of(order[k - 1].piece), head["segment"] = order[k - 1].id, head["visible"] = seen;
-    head["arcs"] = arcs_json(region);
+    head["arcs"] = std::move(arcs);
     head["caption"] = caption;
     out.push_back({std::move(head), framed(geo, caption, body.str())});
   }
   json result{{"fragments", order.size()}, {"arcs", region.arcs.size()}, {"bounded", region.bounded()}};
-  if (auto a = svm::area(region, arrived)) result["area"] = exact_text(*a);
+  if (auto a = svm::area(region, walls)) result["area"] = exact_text(*a);
   trace["result"] = std::move(result);
   return out;
 }
