@@ -21,6 +21,7 @@ run merge "$here/arcs-a.s1" "$here/arcs-b.s1" --op union -o "$work/s1-merge"
 run depth-order "$here/walls.wkt" --eye 0,0 -o "$work/depth"
 run merge "$here/region.geojson" "$here/triangle.geojson" --op intersection -o "$work/s2-merge"
 run visibility2d "$here/room.wkt" --eye 1,4 -o "$work/seen"
+run visibility "$here/blocks.off" --eye 6,-7,5 -o "$work/svm"
 
 # picture NAME RUN STEP: step STEP of RUN (a negative STEP counts from the end).
 out=$work/pictures
@@ -53,6 +54,9 @@ picture s2-merge-result s2-merge -1
 picture seen-0 seen 0
 picture seen-3 seen 3
 picture seen-last seen -1
+picture svm-3 svm 3
+picture svm-5 svm 5
+picture svm-last svm -1
 
 if ((check)); then
   status=0

@@ -731,6 +731,80 @@ for s in steps[1:]:
 assert None not in before
 PY
 expect_error "explain visibility2d: an eye on a wall" '--eye: on segment 4' "$genbsp" explain visibility2d "$ex/room.wkt" --eye 3,3 -o "$ex/o"
+# The spherical visibility map growing: each fragment's area fixed once it
+# arrives, 4 pi in all at every step, and the last map that of genbsp map,
+# polygon by polygon, by areas computed here from each map's cycles.
+python3 - "$ex/blocks.off" <<'PY'
+import sys
+v = [(-4,-4,0),(4,-4,0),(4,4,0),(-4,4,0),(-1,-1,0),(1,-1,0),(1,1,0),(-1,1,0),(-1,-1,2),(1,-1,2),(1,1,2),(-1,1,2),
+     (1,2,0),(3,2,0),(3,3,0),(1,3,0),(1,2,4),(3,2,4),(3,3,4),(1,3,4)]
+f = [(0,1,2,3),(4,5,9,8),(5,6,10,9),(7,4,8,11),(8,9,10,11),(6,7,11,10),(12,13,17,16),(13,14,18,17),(15,12,16,19),(16,17,18,19),(14,15,19,18)]
+with open(sys.argv[1], "w") as o:
+    o.write("OFF\n%d %d 0\n" % (len(v), len(f)))
+    o.writelines("%d %d %d\n" % p for p in v)
+    o.writelines("4 %d %d %d %d\n" % q for q in f)
+PY
+quiet "$genbsp" explain visibility "$ex/blocks.off" --eye 6,-7,5 --projection equirectangular -o "$ex/svm"
+check "explain visibility: exit status 0" test $? -eq 0
+"$genbsp" map "$ex/blocks.off" --eye 6,-7,5 -o "$ex/blocks-map.json" >/dev/null
+check "explain visibility: growing front to back, ending as genbsp map" python3 - "$ex/svm" "$ex/blocks-map.json" <<'PY'
+import json, math, os, sys
+import xml.etree.ElementTree as ET
+d = sys.argv[1]
+trace = json.load(open(os.path.join(d, "trace.json")))
+steps = trace["steps"]
+assert trace["projection"] == "equirectangular"
+assert len(steps) == trace["result"]["fragments"] + 1 == len([f for f in os.listdir(d) if f.startswith("step-")])
+assert trace["result"]["fragments"] >= trace["result"]["polygons"] == 11
+for s in steps:
+    ET.parse(os.path.join(d, s["picture"]))
+    total = sum(x["area"] for x in s["seen"]) + s["free_area"] + s["clipped_area"]
+    assert abs(total - 4 * math.pi) < 1e-9, (s["step"], total)
+    assert s["clipped_area"] == 0
+assert steps[0]["seen"] == [] and abs(steps[0]["free_area"] - 4 * math.pi) < 1e-12
+fixed = {}
+for s in steps[1:]:
+    now = {x["rank"]: x["area"] for x in s["seen"]}
+    assert all(r < s["step"] for r in now)
+    for r, a in fixed.items():   # what was seen stays seen, and no more of it
+        assert abs(now.get(r, 0) - a) < 1e-12, (s["step"], r)
+    assert s["visible"] == (s["rank"] in now)
+    fixed = now
+def areas(path):   # per polygon, by Gauss-Bonnet on each face's cycles of minor arcs
+    m = json.load(open(path))
+    V = m["vertices"]
+    def sub(a, b): return [a[i] - b[i] for i in range(3)]
+    def dot(a, b): return sum(a[i] * b[i] for i in range(3))
+    def cross(a, b): return [a[1]*b[2]-a[2]*b[1], a[2]*b[0]-a[0]*b[2], a[0]*b[1]-a[1]*b[0]]
+    def toward(p, q): return sub(q, [dot(p, q) * x for x in p])
+    out = {}
+    for face in m["faces"]:
+        turning = 0
+        for c in face["cycles"]:
+            for i in range(len(c)):
+                a, p, b = V[c[i - 1]], V[c[i]], V[c[(i + 1) % len(c)]]
+                tin, tout = [-x for x in toward(p, a)], toward(p, b)
+                turning += math.atan2(dot(cross(tin, tout), p), dot(tin, tout))
+        area = 4 * math.pi if not face["cycles"] else 2 * math.pi * (2 - len(face["cycles"])) - turning
+        out[face["polygon"]] = out.get(face["polygon"], 0) + area
+    return out, len(m["faces"])
+mine, mine_faces = areas(os.path.join(d, trace["result"]["map"]))
+theirs, their_faces = areas(sys.argv[2])
+assert mine_faces == their_faces == trace["result"]["faces"], (mine_faces, their_faces)
+assert mine.keys() == theirs.keys() and all(abs(mine[p] - theirs[p]) < 1e-9 for p in mine), (mine, theirs)
+last = {}
+for x in steps[-1]["seen"]:
+    last[x["polygon"]] = last.get(x["polygon"], 0) + x["area"]
+last[-1] = steps[-1]["free_area"]
+assert all(abs(last.get(p, 0) - theirs[p]) < 1e-9 for p in theirs) and len([p for p in theirs if p >= 0]) >= 6
+PY
+quiet "$genbsp" explain visibility "$ex/blocks.off" --eye 6,-7,5 -o "$ex/svm-auto"
+check "explain visibility: a perspective towards the scene by default, clipped to it" python3 -c '
+import json, sys; t = json.load(open(sys.argv[1]))
+assert t["projection"] == "perspective" and t["steps"][-1]["clipped_area"] > 0' "$ex/svm-auto/trace.json"
+"$genbsp" scene sphere --n 9 -o "$ex/sphere.off" >/dev/null
+expect_error "explain visibility: too many polygons" 'sphere.off: 288 convex polygons; explain draws at most 200' "$genbsp" explain visibility "$ex/sphere.off" --eye 0,0,5 -o "$ex/o"
+expect_error "explain visibility: an eye of two numbers" '--eye' "$genbsp" explain visibility "$ex/blocks.off" --eye 1,2 -o "$ex/o"
 quiet "$genbsp" explain build "$ex/a.e1" -o "$ex/build-e2"
 check "explain: a second run replaces the earlier pictures" test "$(ls "$ex/build-e2" | grep -c '^step-')" -eq 7
 python3 -c "
@@ -750,7 +824,7 @@ expect_error "explain: an unknown extension" "cannot tell the geometry from '.tx
 expect_error "explain: operands of two geometries" 'different geometries' "$genbsp" explain merge "$ex/a.e1" "$ex/a.wkt" -o "$ex/o"
 expect_error "explain: a missing subcommand" 'subcommand' "$genbsp" explain "$ex/a.e1" -o "$ex/o"
 
-for sub in map locate stats scene render view shadow bool csg visibility2d batch explain "explain build" "explain merge" "explain depth-order" "explain visibility2d"; do
+for sub in map locate stats scene render view shadow bool csg visibility2d batch explain "explain build" "explain merge" "explain depth-order" "explain visibility2d" "explain visibility"; do
   "$genbsp" $sub --help >"$work/help" 2>&1
   check "$sub --help exits 0" test $? -eq 0
   check "$sub --help says what it does" grep -q "Usage" "$work/help"

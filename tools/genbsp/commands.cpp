@@ -462,11 +462,12 @@ std::vector<svm::light_source<rational>> lights_from(std::vector<std::string> co
   return out;
 }
 
-/// What `genbsp render` knows of each input face: its colour and its plane.
-std::vector<svm::render::face_info> face_infos(loaded const& l, std::vector<std::optional<geometry::io::rgb>> const& colours) {
-  std::vector<svm::render::face_info> out(l.input_faces);
-  std::vector<char> seen(l.input_faces, 0);
-  for (auto const& p : l.prepared.polygons) {
+} // namespace
+
+std::vector<svm::render::face_info> genbsp_tool::face_infos(scene_data const& d) {
+  std::vector<svm::render::face_info> out(d.scene.faces.size());
+  std::vector<char> seen(out.size(), 0);
+  for (auto const& p : d.prepared.polygons) {
     if (p.face >= out.size() || seen[p.face]) continue;
     seen[p.face] = 1;
     auto& fi = out[p.face];
@@ -478,10 +479,12 @@ std::vector<svm::render::face_info> face_infos(loaded const& l, std::vector<std:
     if (norm3(n) > 0) fi.normal = unit3(n);
     fi.centre = mul3(c, 1.0 / static_cast<double>(v.size()));
     fi.offset = dot3(fi.normal, v[0]);
-    if (p.face < colours.size() && colours[p.face]) fi.colour = svm::render::rgb{colours[p.face]->r, colours[p.face]->g, colours[p.face]->b};
+    if (auto const& colour = d.scene.faces[p.face].colour) fi.colour = svm::render::rgb{colour->r, colour->g, colour->b};
   }
   return out;
 }
+
+namespace {
 
 /// Writes a drawing to `path`, the format from its extension, whole or not at all.
 void write_drawing(svm::render::drawing const& d, std::string const& path, int digits) {
@@ -979,12 +982,7 @@ int run(int argc, char** argv) {
     if (ortho && !shift_text.empty()) throw usage_error("--shift is for perspective views");
     if (ortho && rj.number != "exact") throw usage_error("--projection orthographic: exact arithmetic only, for now");
     auto l = load(rj);
-    auto scene_colours = [&] {
-      std::vector<std::optional<geometry::io::rgb>> c;
-      for (auto const& f : l.data->scene.faces) c.push_back(f.colour);
-      return c;
-    }();
-    auto infos = face_infos(l, scene_colours);
+    auto infos = face_infos(*l.data);
     auto [lo_q, hi_q, any] = exact_box(l);
     if (ortho && !any) throw usage_error(rj.scene_path + ": an orthographic view needs a scene with faces");
     std::optional<svm::view_from_infinity<rational>> parallel;

@@ -6,6 +6,7 @@
 #include <geometry/io/polygons.hpp>
 #include <geometry/io/scene.hpp>
 #include <svm/build.hpp>
+#include <svm/render/drawing.hpp>
 
 #include <array>
 #include <memory>
@@ -68,6 +69,10 @@ std::string map_json_text(svm::visibility_map<geometry::rational> const& vm, geo
                           std::shared_ptr<scene_data const> const& scene);
 std::string map_json_text(svm::visibility_map<double> const& vm, geometry::e3::point<geometry::rational> const& eye,
                           std::shared_ptr<scene_data const> const& scene);
+
+/// What a drawing knows of each input face of `scene` (its prepared
+/// polygons read): its colour from the file, and its plane.
+std::vector<svm::render::face_info> face_infos(scene_data const& scene);
 
 /// `path` with `-what` before its extension: where `genbsp render` writes a
 /// cube map's face ("out-front.svg") or one layer ("out-visible-outline.svg").

@@ -4,6 +4,7 @@
 // the finished trees (bsp/explain.hpp), so the pictures show what the library
 // computed, not a re-enactment of it.
 #include "explain.hpp"
+#include "commands.hpp"
 #include "common.hpp"
 
 #include <boolean/polygons.hpp>
@@ -15,6 +16,10 @@
 #include <geometry/io/geojson.hpp>
 #include <geometry/io/wkt.hpp>
 #include <geometry/s1.hpp>
+#include <svm/build.hpp>
+#include <svm/camera.hpp>
+#include <svm/render/drawing.hpp>
+#include <svm/render/svg.hpp>
 #include <svm/visibility2d.hpp>
 
 #include <nlohmann/json.hpp>
@@ -25,6 +30,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <map>
 #include <numbers>
 #include <optional>
 #include <sstream>
@@ -1013,6 +1019,177 @@ std::vector<step> visibility2d_steps(explain_job const& job, json& trace) {
   return out;
 }
 
+/// The camera of a picture of the scene from `eye`: `auto` looks at the
+/// middle of the scene's box in perspective when every vertex is within
+/// 60 degrees of that direction, else takes the panorama (equirectangular).
+svm::projector camera_of(std::string const& name, std::vector<svm::polygon<rational>> const& polys, svm::vec3 const& eye) {
+  using namespace svm::detail;
+  svm::vec3 lo{HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  std::vector<svm::vec3> points;
+  for (auto const& p : polys)
+    for (auto const& q : p.vertices) {
+      svm::vec3 v{geometry::to_double(q.x()), geometry::to_double(q.y()), geometry::to_double(q.z())};
+      points.push_back(v);
+      for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], v[k]), hi[k] = std::max(hi[k], v[k]);
+    }
+  svm::vec3 forward = sub3({(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2}, eye);
+  double widest = 0; // the largest angle between `forward` and a vertex's direction
+  if (norm3(forward) > 0) {
+    for (auto const& v : points) {
+      auto d = sub3(v, eye);
+      widest = norm3(d) > 0 ? std::max(widest, std::acos(std::clamp(dot3(unit3(d), unit3(forward)), -1.0, 1.0))) : std::numbers::pi;
+    }
+  } else {
+    forward = {1, 0, 0}, widest = std::numbers::pi;
+  }
+  svm::camera cam;
+  cam.forward = forward;
+  cam.up = std::abs(forward[2]) > (1 - 1e-9) * norm3(forward) ? svm::vec3{0, 1, 0} : svm::vec3{0, 0, 1};
+  bool panorama = name == "equirectangular" || (name == "auto" && widest > std::numbers::pi / 3);
+  if (panorama) {
+    cam.width = 720, cam.height = 360, cam.hfov = 360;
+    return svm::projector(cam, svm::projection::equirectangular);
+  }
+  cam.width = 480, cam.height = 360;
+  // The smallest view that holds every vertex, with a margin: a vertex at
+  // (x, y, z) in the camera's frame is at (x / z, y / z) in the image plane,
+  // whose half width is tan(hfov / 2) and half height that · height / width.
+  // Aimed at the middle of the vertices' image, then fitted again.
+  double half = 1e-3;
+  for (int round = 0; round < 3; ++round) {
+    svm::projector frame(cam, svm::projection::perspective);
+    double x0 = HUGE_VAL, x1 = -HUGE_VAL, y0 = HUGE_VAL, y1 = -HUGE_VAL;
+    for (auto const& v : points)
+      if (auto l = frame.local(sub3(v, eye)); l[2] > 0) {
+        x0 = std::min(x0, l[0] / l[2]), x1 = std::max(x1, l[0] / l[2]);
+        y0 = std::min(y0, l[1] / l[2]), y1 = std::max(y1, l[1] / l[2]);
+      }
+    if (!(x0 <= x1)) break;
+    half = std::max({1e-3, (x1 - x0) / 2, (y1 - y0) / 2 * cam.width / cam.height});
+    if (round < 2) cam.forward = frame.world({(x0 + x1) / 2, (y0 + y1) / 2, 1});
+  }
+  cam.hfov = std::clamp(2 * std::atan(1.15 * half) * 180 / std::numbers::pi, 1.0, 150.0);
+  return svm::projector(cam, svm::projection::perspective);
+}
+
+/// The spherical visibility map growing: the scene's convex polygons go into
+/// the depth-order tree (as the map's build puts them), its fragments arrive
+/// front to back, and each step shows the library's map of the fragments
+/// arrived so far.  No later fragment hides an earlier one, so what a step
+/// shows stays to the end.  The fragments' planes are the scene's and the
+/// tree's cuts (rounded constants), so every map keeps the degree bound.
+std::vector<step> visibility_steps(explain_job const& job, json& trace, std::vector<std::pair<std::string, std::string>>& files) {
+  using K3 = geometry::e3::kernel<rational>;
+  auto c = parse_numbers(job.eye, 3, "--eye", "X,Y,Z");
+  geometry::e3::point<rational> eye(c[0], c[1], c[2]);
+  svm::vec3 eye_d{geometry::to_double(c[0]), geometry::to_double(c[1]), geometry::to_double(c[2])};
+  auto data = scene_data_of(job.input);
+  auto polys = polygons_in<rational>(data->prepared);
+  if (polys.empty()) throw usage_error(job.input + ": no face to see");
+  if (polys.size() > most_pieces)
+    throw usage_error(job.input + ": " + std::to_string(polys.size()) + " convex polygons; explain draws at most " +
+                      std::to_string(most_pieces) + " (a picture with more is not readable)");
+  trace["geometry"] = "e3";
+  trace["eye"] = json::array({exact_text(c[0]), exact_text(c[1]), exact_text(c[2])});
+  // The fragments front to back, as `svm::build` makes them.
+  bsp::fragment_list<K3, std::uint32_t> input;
+  std::size_t edge_on = 0;
+  for (std::uint32_t i = 0; i < polys.size(); ++i) {
+    auto piece = svm::detail::scene_polygon(polys[i]);
+    if (geometry::e3::side(piece.support, eye) == geometry::oriented_side::on) {
+      ++edge_on;
+      continue;
+    }
+    input.push_back({std::move(piece), i});
+  }
+  auto tree = bsp::build_depth_order<K3>(std::move(input), bsp::few_splits(geometry::e3::axis_median_cut<rational>{}, 1));
+  std::vector<svm::convex_piece<rational>> order;
+  std::vector<std::uint32_t> face_of; // the input face of each fragment
+  bsp::for_each_front_to_back(tree, eye, [&](bsp::fragment<K3, std::uint32_t> const& f) {
+    order.push_back({f.piece, static_cast<std::int64_t>(order.size())});
+    face_of.push_back(polys[f.id].face);
+  });
+  std::optional<svm::projector> made;
+  try {
+    made.emplace(camera_of(job.projection, polys, eye_d));
+  } catch (std::invalid_argument const& e) {
+    throw usage_error(std::string("--projection: ") + e.what());
+  }
+  auto const& pr = *made;
+  trace["projection"] = pr.kind() == svm::projection::perspective ? "perspective" : "equirectangular";
+  // Each fragment drawn in its polygon's colour (the file's, else the palette's).
+  auto by_face = face_infos(*data);
+  std::vector<svm::render::face_info> infos;
+  for (auto f : face_of) {
+    infos.push_back(by_face[f]);
+    if (!infos.back().colour) infos.back().colour = svm::render::palette(f);
+  }
+  svm::render::options ro;
+  ro.eye = eye_d;
+  ro.tolerance = 0.25;
+  int const top = 28, w = pr.cam().width, h = pr.cam().height;
+  auto outline = [&](std::ostream& o, svm::convex_piece<rational> const& piece) {
+    using namespace svm::detail;
+    std::vector<svm::vec3> d;
+    for (auto const& q : geometry::e3::homogeneous_vertices(piece.shape)) {
+      double w4 = geometry::to_double(q[3]);
+      d.push_back(unit3(sub3({geometry::to_double(q[0]) / w4, geometry::to_double(q[1]) / w4, geometry::to_double(q[2]) / w4}, eye_d)));
+    }
+    o << "<path fill=\"none\" stroke=\"#d62728\" stroke-width=\"2\" stroke-dasharray=\"6 3\" data-outline=\"arriving\" d=\"";
+    for (std::size_t i = 0; i < d.size(); ++i) {
+      auto const &p = d[i], &q = d[(i + 1) % d.size()];
+      if (pr.kind() == svm::projection::perspective && (pr.local(p)[2] <= 0 || pr.local(q)[2] <= 0)) continue;
+      auto line = svm::render::detail::arc_image(pr, p, q, 0.5);
+      for (std::size_t k = 0; k < line.size(); ++k) o << (k == 0 ? "M" : " L") << fmt(line[k].x) << ',' << fmt(line[k].y);
+      o << ' ';
+    }
+    o << "\"/>\n";
+  };
+  std::vector<step> out;
+  std::vector<std::optional<double>> first_area(order.size());
+  for (std::size_t k = 0; k <= order.size(); ++k) {
+    std::vector<svm::convex_piece<rational>> arrived(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(k));
+    auto vm = svm::build(arrived, eye, pr.window_options());
+    auto areas = svm::face_areas(vm.map);
+    std::map<std::int64_t, double> by_label;
+    for (std::size_t f = 0; f < areas.size(); ++f) by_label[vm.map.faces()[f].label] += areas[f];
+    bool seen = k > 0 && by_label.count(static_cast<std::int64_t>(k - 1));
+    json shown = json::array();
+    for (auto const& [label, area] : by_label)
+      if (label >= 0) shown.push_back({{"rank", label}, {"polygon", face_of[static_cast<std::size_t>(label)]}, {"area", area}});
+    std::string caption = k == 0 ? "visibility map: no fragment yet, every direction free"
+                                 : "visibility map, step " + std::to_string(k) + ": fragment " + std::to_string(k - 1) + " (of face " +
+                                       std::to_string(face_of[k - 1]) + ") arrives, " + (seen ? "visible" : "hidden");
+    std::string inner = svm::render::to_svg(svm::render::draw(vm, pr, infos, ro));
+    inner.erase(0, inner.find("<svg"));
+    inner.insert(4, " y=\"" + std::to_string(top) + "\"");
+    std::ostringstream o;
+    o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << w << "\" height=\"" << h + top << "\" viewBox=\"0 0 " << w << ' ' << h + top
+      << "\" font-family=\"sans-serif\">\n<title>" << html_escape(caption) << "</title>\n"
+      << inner << "<g transform=\"translate(0," << top << ")\">\n<rect x=\"0.5\" y=\"0.5\" width=\"" << w - 1 << "\" height=\"" << h - 1
+      << "\" fill=\"none\" stroke=\"#cccccc\"/>\n";
+    if (k > 0) outline(o, order[k - 1]);
+    o << "</g>\n<text font-size=\"12\" x=\"6\" y=\"18\">" << html_escape(caption) << "</text>\n</svg>\n";
+    json head{{"phase", "visibility"}, {"operation", k == 0 ? "start" : "insert"}};
+    if (k > 0) head["rank"] = k - 1, head["polygon"] = face_of[k - 1], head["visible"] = seen;
+    head["faces"] = vm.map.faces().size();
+    head["seen"] = std::move(shown);
+    head["free_area"] = by_label.count(-1) ? by_label[-1] : 0.0;
+    head["clipped_area"] = by_label.count(svm::clipped) ? by_label[svm::clipped] : 0.0;
+    head["caption"] = caption;
+    out.push_back({std::move(head), o.str()});
+  }
+  // The last step's map over the whole sphere, labelled by input face: as
+  // `genbsp map` writes it.
+  auto labelled = order;
+  for (std::size_t r = 0; r < labelled.size(); ++r) labelled[r].label = face_of[r];
+  auto vm = svm::build(labelled, eye);
+  files.emplace_back("map.json", map_json_text(vm, eye, data));
+  trace["result"] = {{"polygons", polys.size()}, {"discarded_edge_on", edge_on}, {"fragments", order.size()},
+                     {"faces", vm.map.faces().size()}, {"map", "map.json"}};
+  return out;
+}
+
 } // namespace
 
 void explain_job::add_to(CLI::App& app) {
@@ -1041,14 +1218,25 @@ void explain_job::add_to(CLI::App& app) {
   seen->add_option("input", input, "the walls: polygons' edges and line strings (.wkt or GeoJSON)")->required();
   seen->add_option("--eye", eye, "the eye X,Y, read exactly, on no wall")->required();
   seen->add_option("-o,--output", output, "the folder to write (made if missing; its earlier pictures are replaced)")->required();
+  space = command->add_subcommand("visibility", "the spherical visibility map of an eye in a scene, growing as fragments arrive front to back");
+  space->add_option("input", input, "the scene: OFF, OBJ, STL, PLY or glTF, at most 200 convex polygons")->required();
+  space->add_option("--eye", eye, "the eye X,Y,Z, read exactly")->required();
+  space->add_option("--projection", projection,
+                    "auto (perspective towards the scene when it fits in 120 degrees, else equirectangular), perspective or equirectangular")
+      ->check(CLI::IsMember({"auto", "perspective", "equirectangular"}));
+  space->add_option("-o,--output", output, "the folder to write (made if missing; its earlier pictures are replaced); map.json is the last step's map")
+      ->required();
 }
 
 void explain_job::run() const {
-  json trace{{"genbsp", version()}, {"command", *build ? "build" : *merge ? "merge" : *depth ? "depth-order" : "visibility2d"}};
+  json trace{{"genbsp", version()}, {"command", *build ? "build" : *merge ? "merge" : *depth ? "depth-order" : *seen ? "visibility2d" : "visibility"}};
   trace["inputs"] = *merge ? json::array({input, other}) : json::array({input});
   if (*merge) trace["op"] = op;
   std::vector<step> steps;
-  if (*depth) {
+  std::vector<std::pair<std::string, std::string>> extra; // more files to write: name, text
+  if (*space) {
+    steps = visibility_steps(*this, trace, extra);
+  } else if (*depth) {
     steps = depth_order_steps(*this, trace);
   } else if (*seen) {
     steps = visibility2d_steps(*this, trace);
@@ -1082,11 +1270,13 @@ void explain_job::run() const {
     list.push_back(std::move(s));
   }
   trace["steps"] = std::move(list);
+  for (auto const& [name, text] : extra) write_file((fs::path(output) / name).string(), text);
   write_file((fs::path(output) / "trace.json").string(), trace.dump(1) + "\n");
   std::string title = std::string("genbsp explain ") + (*build   ? "build " + input
                                                         : *merge ? "merge " + input + " " + other + " --op " + op
                                                         : *depth ? "depth-order " + input + " --eye " + eye
-                                                                 : "visibility2d " + input + " --eye " + eye);
+                                                        : *seen  ? "visibility2d " + input + " --eye " + eye
+                                                                 : "visibility " + input + " --eye " + eye);
   write_file((fs::path(output) / "index.html").string(), index_html(files, captions, title));
   out() << json{{"genbsp", version()}, {"steps", steps.size()}, {"output", output}}.dump() << "\n";
 }

@@ -8,16 +8,19 @@
 namespace genbsp_tool {
 
 /// `genbsp explain build INPUT -o DIR`, `genbsp explain merge A B --op OP -o
-/// DIR` and `genbsp explain depth-order SEGMENTS --eye X,Y -o DIR`: an
-/// algorithm step by step on a small input, as numbered SVG pictures, an
-/// `index.html` that steps through them and a JSON trace.
+/// DIR`, `genbsp explain depth-order SEGMENTS --eye X,Y -o DIR`, `genbsp
+/// explain visibility2d WALLS --eye X,Y -o DIR` and `genbsp explain
+/// visibility SCENE --eye X,Y,Z -o DIR`: an algorithm step by step on a small
+/// input, as numbered SVG pictures, an `index.html` that steps through them
+/// and a JSON trace.
 struct explain_job {
-  std::string input, other, op = "union", geometry, output, eye;
+  std::string input, other, op = "union", geometry, output, eye, projection = "auto";
   CLI::App* command = nullptr;
   CLI::App* build = nullptr;
   CLI::App* merge = nullptr;
   CLI::App* depth = nullptr;
   CLI::App* seen = nullptr;
+  CLI::App* space = nullptr; ///< `visibility`, in space
   void add_to(CLI::App& app);
   void run() const;
 };
