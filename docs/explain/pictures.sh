@@ -22,6 +22,8 @@ run depth-order "$here/walls.wkt" --eye 0,0 -o "$work/depth"
 run merge "$here/region.geojson" "$here/triangle.geojson" --op intersection -o "$work/s2-merge"
 run visibility2d "$here/room.wkt" --eye 1,4 -o "$work/seen"
 run visibility "$here/blocks.off" --eye 6,-7,5 -o "$work/svm"
+run visibility "$here/blocks.off" --view-dir -1,1,-1 -o "$work/parallel"
+run visibility "$here/blocks.off" --eye -3,-5,9 -o "$work/light"
 
 # picture NAME RUN STEP: step STEP of RUN (a negative STEP counts from the end).
 out=$work/pictures
@@ -57,6 +59,9 @@ picture seen-last seen -1
 picture svm-3 svm 3
 picture svm-5 svm 5
 picture svm-last svm -1
+picture svm-parallel parallel -1
+picture shadow-light light -1
+"$genbsp" render "$here/blocks.off" --eye 6,-7,5 --look 0,0.5,1 --fov 80 --light -3,-5,9 --shadows --size 480x360 -o "$out/shadow-eye.svg" >/dev/null
 
 if ((check)); then
   status=0

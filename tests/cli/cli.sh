@@ -802,6 +802,28 @@ quiet "$genbsp" explain visibility "$ex/blocks.off" --eye 6,-7,5 -o "$ex/svm-aut
 check "explain visibility: a perspective towards the scene by default, clipped to it" python3 -c '
 import json, sys; t = json.load(open(sys.argv[1]))
 assert t["projection"] == "perspective" and t["steps"][-1]["clipped_area"] > 0' "$ex/svm-auto/trace.json"
+quiet "$genbsp" explain visibility "$ex/blocks.off" --view-dir -1,1,-1 -o "$ex/svm-parallel"
+check "explain visibility --view-dir: exit status 0" test $? -eq 0
+"$genbsp" map "$ex/blocks.off" --view-dir -1,1,-1 -o "$ex/blocks-parallel.json" >/dev/null
+check "explain visibility --view-dir: the last map is genbsp map --view-dir's, area by area in the view plane" python3 - "$ex/svm-parallel" "$ex/blocks-parallel.json" <<'PY'
+import json, os, sys
+d = sys.argv[1]
+trace = json.load(open(os.path.join(d, "trace.json")))
+assert trace["projection"] == "orthographic" and trace["view_dir"] == ["-1", "1", "-1"]
+def areas(path):   # per polygon: the signed areas of its faces' cycles (holes turn the other way)
+    m = json.load(open(path))
+    V, out = m["vertices"], {}
+    for face in m["faces"]:
+        for c in face["cycles"]:
+            a = sum(V[c[i - 1]][0] * V[c[i]][1] - V[c[i]][0] * V[c[i - 1]][1] for i in range(len(c))) / 2
+            out[face["polygon"]] = out.get(face["polygon"], 0) + a
+    return out, len(m["faces"]), len(m["vertices"])
+mine, theirs = areas(os.path.join(d, "map.json")), areas(sys.argv[2])
+assert mine[1:] == theirs[1:], (mine[1:], theirs[1:])
+assert mine[0].keys() == theirs[0].keys() and all(abs(mine[0][p] - theirs[0][p]) < 1e-9 for p in mine[0] if p >= 0)
+assert sum(1 for p in theirs[0] if p >= 0 and theirs[0][p] > 0.1) >= 6
+PY
+expect_error "explain visibility: --eye and --view-dir" 'give --eye X,Y,Z or --view-dir' "$genbsp" explain visibility "$ex/blocks.off" --eye 1,2,3 --view-dir 1,0,0 -o "$ex/o"
 "$genbsp" scene sphere --n 9 -o "$ex/sphere.off" >/dev/null
 expect_error "explain visibility: too many polygons" 'sphere.off: 288 convex polygons; explain draws at most 200' "$genbsp" explain visibility "$ex/sphere.off" --eye 0,0,5 -o "$ex/o"
 expect_error "explain visibility: an eye of two numbers" '--eye' "$genbsp" explain visibility "$ex/blocks.off" --eye 1,2 -o "$ex/o"

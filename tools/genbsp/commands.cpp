@@ -705,6 +705,16 @@ std::string map_json_text(svm::visibility_map<double> const& vm, geometry::e3::p
   return map_json(vm, eye, loaded{scene, scene->prepared, scene->scene.faces.size()}).dump(1) + "\n";
 }
 
+svm::view_from_infinity<rational> parallel_view_of(std::shared_ptr<scene_data const> const& scene,
+                                                   std::vector<svm::polygon<rational>> const& polygons, std::string const& direction) {
+  return parallel_view(loaded{scene, scene->prepared, scene->scene.faces.size()}, polygons, direction, {});
+}
+
+std::string parallel_map_json_text(svm::visibility_map<rational> const& vm, svm::view_from_infinity<rational> const& view,
+                                   std::string const& up, std::shared_ptr<scene_data const> const& scene) {
+  return parallel_map_json(vm, view, up, loaded{scene, scene->prepared, scene->scene.faces.size()}).dump(1) + "\n";
+}
+
 int run(std::vector<std::string> const& args) {
   std::vector<char*> argv;
   for (auto const& a : args) argv.push_back(const_cast<char*>(a.c_str()));

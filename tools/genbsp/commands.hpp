@@ -6,6 +6,7 @@
 #include <geometry/io/polygons.hpp>
 #include <geometry/io/scene.hpp>
 #include <svm/build.hpp>
+#include <svm/parallel.hpp>
 #include <svm/render/drawing.hpp>
 
 #include <array>
@@ -69,6 +70,16 @@ std::string map_json_text(svm::visibility_map<geometry::rational> const& vm, geo
                           std::shared_ptr<scene_data const> const& scene);
 std::string map_json_text(svm::visibility_map<double> const& vm, geometry::e3::point<geometry::rational> const& eye,
                           std::shared_ptr<scene_data const> const& scene);
+
+/// The parallel view of `scene` along `direction` ("DX,DY,DZ", exact) about
+/// the centre of its bounding box, as `genbsp map --view-dir` makes it.
+svm::view_from_infinity<geometry::rational> parallel_view_of(std::shared_ptr<scene_data const> const& scene,
+                                                             std::vector<svm::polygon<geometry::rational>> const& polygons,
+                                                             std::string const& direction);
+/// MAP.json of a parallel view (`vm` the map of `view`'s image from its
+/// eye), as `genbsp map --view-dir` writes it; `up` as its `--up`.
+std::string parallel_map_json_text(svm::visibility_map<geometry::rational> const& vm, svm::view_from_infinity<geometry::rational> const& view,
+                                   std::string const& up, std::shared_ptr<scene_data const> const& scene);
 
 /// What a drawing knows of each input face of `scene` (its prepared
 /// polygons read): its colour from the file, and its plane.

@@ -1072,6 +1072,29 @@ svm::projector camera_of(std::string const& name, std::vector<svm::polygon<ratio
   return svm::projector(cam, svm::projection::perspective);
 }
 
+/// The camera of a parallel view's picture: looking along the view at its
+/// image, fitted to the scene's bounding box (as `genbsp render --projection
+/// orthographic` fits it), up along z (y when looking along z).
+svm::projector parallel_camera_of(svm::view_from_infinity<rational> const& view, geometry::io::prepared const& scene) {
+  using namespace svm::detail;
+  auto const& e = view.direction();
+  svm::vec3 forward{-geometry::to_double(e[0]), -geometry::to_double(e[1]), -geometry::to_double(e[2])};
+  svm::camera cam;
+  cam.forward = forward;
+  cam.up = std::abs(forward[2]) > (1 - 1e-9) * norm3(forward) ? svm::vec3{0, 1, 0} : svm::vec3{0, 0, 1};
+  cam.width = 480, cam.height = 360;
+  svm::projector base(cam, svm::projection::perspective);
+  svm::vec3 c{geometry::to_double(view.centre().x()), geometry::to_double(view.centre().y()), geometry::to_double(view.centre().z())};
+  double half_w = 0, half_h = 0;
+  for (auto const& p : scene.polygons)
+    for (auto const& q : p.vertices) {
+      auto v = sub3({geometry::to_double(q.x()), geometry::to_double(q.y()), geometry::to_double(q.z())}, c);
+      half_w = std::max(half_w, std::abs(dot3(v, base.right()))), half_h = std::max(half_h, std::abs(dot3(v, base.up())));
+    }
+  double extent = 2.3 * std::max({half_w, half_h * cam.width / cam.height, 1e-300});
+  return svm::projector(svm::parallel_camera(view, cam.up, extent, cam.width, cam.height), svm::projection::perspective);
+}
+
 /// The spherical visibility map growing: the scene's convex polygons go into
 /// the depth-order tree (as the map's build puts them), its fragments arrive
 /// front to back, and each step shows the library's map of the fragments
@@ -1080,17 +1103,41 @@ svm::projector camera_of(std::string const& name, std::vector<svm::polygon<ratio
 /// tree's cuts (rounded constants), so every map keeps the degree bound.
 std::vector<step> visibility_steps(explain_job const& job, json& trace, std::vector<std::pair<std::string, std::string>>& files) {
   using K3 = geometry::e3::kernel<rational>;
-  auto c = parse_numbers(job.eye, 3, "--eye", "X,Y,Z");
-  geometry::e3::point<rational> eye(c[0], c[1], c[2]);
-  svm::vec3 eye_d{geometry::to_double(c[0]), geometry::to_double(c[1]), geometry::to_double(c[2])};
+  using namespace svm::detail;
+  if (job.eye.empty() == job.view_dir.empty()) throw usage_error("explain visibility: give --eye X,Y,Z or --view-dir DX,DY,DZ");
+  if (!job.view_dir.empty() && job.projection != "auto") throw usage_error("--view-dir is a parallel view; leave out --projection");
   auto data = scene_data_of(job.input);
   auto polys = polygons_in<rational>(data->prepared);
   if (polys.empty()) throw usage_error(job.input + ": no face to see");
   if (polys.size() > most_pieces)
     throw usage_error(job.input + ": " + std::to_string(polys.size()) + " convex polygons; explain draws at most " +
                       std::to_string(most_pieces) + " (a picture with more is not readable)");
+  auto to_vec = [](geometry::e3::point<rational> const& p) { return svm::vec3{geometry::to_double(p.x()), geometry::to_double(p.y()), geometry::to_double(p.z())}; };
   trace["geometry"] = "e3";
-  trace["eye"] = json::array({exact_text(c[0]), exact_text(c[1]), exact_text(c[2])});
+  // A parallel view is the central view of the scene's image from a finite
+  // eye (svm::view_from_infinity): the same steps on the image.
+  std::optional<svm::view_from_infinity<rational>> parallel;
+  geometry::e3::point<rational> eye;
+  svm::vec3 light; // the head light, for shading
+  if (!job.view_dir.empty()) {
+    parallel.emplace(parallel_view_of(data, polys, job.view_dir));
+    auto scene = polys;
+    polys = parallel->image(scene);
+    eye = parallel->eye();
+    auto d = parse_numbers(job.view_dir, 3, "--view-dir", "DX,DY,DZ");
+    trace["view_dir"] = json::array({exact_text(d[0]), exact_text(d[1]), exact_text(d[2])});
+    // A far point behind the viewer.
+    double size = 1;
+    for (auto const& p : scene)
+      for (auto const& q : p.vertices) size = std::max(size, norm3(sub3(to_vec(q), to_vec(parallel->centre()))));
+    light = add3(to_vec(parallel->centre()), mul3(unit3({-geometry::to_double(d[0]), -geometry::to_double(d[1]), -geometry::to_double(d[2])}), 1e6 * size));
+  } else {
+    auto c = parse_numbers(job.eye, 3, "--eye", "X,Y,Z");
+    eye = geometry::e3::point<rational>(c[0], c[1], c[2]);
+    trace["eye"] = json::array({exact_text(c[0]), exact_text(c[1]), exact_text(c[2])});
+    light = to_vec(eye);
+  }
+  svm::vec3 eye_d = to_vec(eye);
   // The fragments front to back, as `svm::build` makes them.
   bsp::fragment_list<K3, std::uint32_t> input;
   std::size_t edge_on = 0;
@@ -1111,12 +1158,12 @@ std::vector<step> visibility_steps(explain_job const& job, json& trace, std::vec
   });
   std::optional<svm::projector> made;
   try {
-    made.emplace(camera_of(job.projection, polys, eye_d));
+    made.emplace(parallel ? parallel_camera_of(*parallel, data->prepared) : camera_of(job.projection, polys, eye_d));
   } catch (std::invalid_argument const& e) {
     throw usage_error(std::string("--projection: ") + e.what());
   }
   auto const& pr = *made;
-  trace["projection"] = pr.kind() == svm::projection::perspective ? "perspective" : "equirectangular";
+  trace["projection"] = parallel ? "orthographic" : pr.kind() == svm::projection::perspective ? "perspective" : "equirectangular";
   // Each fragment drawn in its polygon's colour (the file's, else the palette's).
   auto by_face = face_infos(*data);
   std::vector<svm::render::face_info> infos;
@@ -1125,11 +1172,10 @@ std::vector<step> visibility_steps(explain_job const& job, json& trace, std::vec
     if (!infos.back().colour) infos.back().colour = svm::render::palette(f);
   }
   svm::render::options ro;
-  ro.eye = eye_d;
+  ro.eye = light;
   ro.tolerance = 0.25;
   int const top = 28, w = pr.cam().width, h = pr.cam().height;
   auto outline = [&](std::ostream& o, svm::convex_piece<rational> const& piece) {
-    using namespace svm::detail;
     std::vector<svm::vec3> d;
     for (auto const& q : geometry::e3::homogeneous_vertices(piece.shape)) {
       double w4 = geometry::to_double(q[3]);
@@ -1146,7 +1192,6 @@ std::vector<step> visibility_steps(explain_job const& job, json& trace, std::vec
     o << "\"/>\n";
   };
   std::vector<step> out;
-  std::vector<std::optional<double>> first_area(order.size());
   for (std::size_t k = 0; k <= order.size(); ++k) {
     std::vector<svm::convex_piece<rational>> arrived(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(k));
     auto vm = svm::build(arrived, eye, pr.window_options());
@@ -1184,7 +1229,7 @@ std::vector<step> visibility_steps(explain_job const& job, json& trace, std::vec
   auto labelled = order;
   for (std::size_t r = 0; r < labelled.size(); ++r) labelled[r].label = face_of[r];
   auto vm = svm::build(labelled, eye);
-  files.emplace_back("map.json", map_json_text(vm, eye, data));
+  files.emplace_back("map.json", parallel ? parallel_map_json_text(vm, *parallel, "", data) : map_json_text(vm, eye, data));
   trace["result"] = {{"polygons", polys.size()}, {"discarded_edge_on", edge_on}, {"fragments", order.size()},
                      {"faces", vm.map.faces().size()}, {"map", "map.json"}};
   return out;
@@ -1220,7 +1265,8 @@ void explain_job::add_to(CLI::App& app) {
   seen->add_option("-o,--output", output, "the folder to write (made if missing; its earlier pictures are replaced)")->required();
   space = command->add_subcommand("visibility", "the spherical visibility map of an eye in a scene, growing as fragments arrive front to back");
   space->add_option("input", input, "the scene: OFF, OBJ, STL, PLY or glTF, at most 200 convex polygons")->required();
-  space->add_option("--eye", eye, "the eye X,Y,Z, read exactly")->required();
+  space->add_option("--eye", eye, "the eye X,Y,Z, read exactly");
+  space->add_option("--view-dir", view_dir, "or a parallel view along DX,DY,DZ (exact; no --eye)");
   space->add_option("--projection", projection,
                     "auto (perspective towards the scene when it fits in 120 degrees, else equirectangular), perspective or equirectangular")
       ->check(CLI::IsMember({"auto", "perspective", "equirectangular"}));
@@ -1276,7 +1322,7 @@ void explain_job::run() const {
                                                         : *merge ? "merge " + input + " " + other + " --op " + op
                                                         : *depth ? "depth-order " + input + " --eye " + eye
                                                         : *seen  ? "visibility2d " + input + " --eye " + eye
-                                                                 : "visibility " + input + " --eye " + eye);
+                                                                 : "visibility " + input + (eye.empty() ? " --view-dir " + view_dir : " --eye " + eye));
   write_file((fs::path(output) / "index.html").string(), index_html(files, captions, title));
   out() << json{{"genbsp", version()}, {"steps", steps.size()}, {"output", output}}.dump() << "\n";
 }

@@ -14,7 +14,7 @@ namespace genbsp_tool {
 /// input, as numbered SVG pictures, an `index.html` that steps through them
 /// and a JSON trace.
 struct explain_job {
-  std::string input, other, op = "union", geometry, output, eye, projection = "auto";
+  std::string input, other, op = "union", geometry, output, eye, view_dir, projection = "auto";
   CLI::App* command = nullptr;
   CLI::App* build = nullptr;
   CLI::App* merge = nullptr;
