@@ -21,6 +21,8 @@ run merge "$here/arcs-a.s1" "$here/arcs-b.s1" --op union -o "$work/s1-merge"
 run depth-order "$here/walls.wkt" --eye 0,0 -o "$work/depth"
 run merge "$here/region.geojson" "$here/triangle.geojson" --op intersection -o "$work/s2-merge"
 run visibility2d "$here/room.wkt" --eye 1,4 -o "$work/seen"
+run build "$here/cube.off" -o "$work/e3-build"
+run merge "$here/cube.off" "$here/tetrahedron.off" --op difference -o "$work/e3-merge"
 run visibility "$here/blocks.off" --eye 6,-7,5 -o "$work/svm"
 run visibility "$here/blocks.off" --view-dir -1,1,-1 -o "$work/parallel"
 run visibility "$here/blocks.off" --eye -3,-5,9 -o "$work/light"
@@ -53,6 +55,9 @@ picture depth-order-last depth -1
 picture s2-merge-a s2-merge 0
 picture s2-merge-step s2-merge 12
 picture s2-merge-result s2-merge -1
+picture e3-build-3 e3-build 3
+picture e3-merge-step e3-merge 12
+picture e3-merge-result e3-merge -1
 picture seen-0 seen 0
 picture seen-3 seen 3
 picture seen-last seen -1

@@ -827,6 +827,40 @@ expect_error "explain visibility: --eye and --view-dir" 'give --eye X,Y,Z or --v
 "$genbsp" scene sphere --n 9 -o "$ex/sphere.off" >/dev/null
 expect_error "explain visibility: too many polygons" 'sphere.off: 288 convex polygons; explain draws at most 200' "$genbsp" explain visibility "$ex/sphere.off" --eye 0,0,5 -o "$ex/o"
 expect_error "explain visibility: an eye of two numbers" '--eye' "$genbsp" explain visibility "$ex/blocks.off" --eye 1,2 -o "$ex/o"
+# Solids (E3): the cube's tree ends with its volume inside, and the merge
+# with the volume genbsp csg gives; both checked exactly.
+printf 'OFF\n8 6 0\n0 0 0\n2 0 0\n2 2 0\n0 2 0\n0 0 2\n2 0 2\n2 2 2\n0 2 2\n4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n' >"$ex/cube.off"
+printf 'OFF\n4 4 0\n1 1 1\n3 1 1\n1 3 1\n1 1 3\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n' >"$ex/tet.off"
+quiet "$genbsp" explain build "$ex/cube.off" -o "$ex/build-e3"
+check "explain build (e3): exit status 0" test $? -eq 0
+quiet "$genbsp" explain merge "$ex/cube.off" "$ex/tet.off" --op difference -o "$ex/merge-e3"
+check "explain merge (e3): exit status 0" test $? -eq 0
+"$genbsp" csg "$ex/cube.off" "$ex/tet.off" --op difference -o "$ex/cube-tet.off" >"$ex/csg.json"
+check "explain (e3): cells inside add up to the solids' volumes, exactly" python3 - "$ex" <<'PY'
+import json, os, sys
+import xml.etree.ElementTree as ET
+from fractions import Fraction as F
+ex = sys.argv[1]
+def trace(name):
+    t = json.load(open(os.path.join(ex, name, "trace.json")))
+    assert t["geometry"] == "e3"
+    for s in t["steps"]:
+        ET.parse(os.path.join(ex, name, s["picture"]))
+    assert len(t["steps"]) == len([f for f in os.listdir(os.path.join(ex, name)) if f.startswith("step-")])
+    return t
+def inside(step):
+    return sum(F(c["volume"]) for c in step["cells"] if c["label"] is True)
+b = trace("build-e3")
+assert len(b["steps"]) == b["result"]["interior_nodes"] + 1 and b["result"]["cells"] == len(b["steps"][-1]["cells"])
+assert inside(b["steps"][-1]) == 8
+assert all(c["volume"] is None for c in b["steps"][-1]["cells"] if c["label"] is False)   # outside cells are unbounded
+m = trace("merge-e3")
+csg = F(json.load(open(os.path.join(ex, "csg.json")))["volume_exact"])
+assert inside(m["steps"][-1]) == csg == F(43, 6), (inside(m["steps"][-1]), csg)
+assert inside(m["steps"][0]) == 8 and inside(m["steps"][1]) == F(4, 3)   # the operands
+root = ET.parse(os.path.join(ex, "build-e3", b["steps"][-1]["picture"])).getroot()
+assert any(e.tag.endswith("path") and e.get("fill") for e in root.iter()), "no solid drawn"
+PY
 quiet "$genbsp" explain build "$ex/a.e1" -o "$ex/build-e2"
 check "explain: a second run replaces the earlier pictures" test "$(ls "$ex/build-e2" | grep -c '^step-')" -eq 7
 python3 -c "

@@ -8,6 +8,7 @@
 #include "common.hpp"
 
 #include <boolean/polygons.hpp>
+#include <boolean/polyhedra.hpp>
 #include <boolean/spherical.hpp>
 #include <bsp/depth_order.hpp>
 #include <bsp/explain.hpp>
@@ -525,6 +526,217 @@ struct sphere_geometry {
   }
 };
 
+/// The camera of a picture of `points` from `eye`: `auto` looks at the
+/// middle of their box in perspective when every vertex is within
+/// 60 degrees of that direction, else takes the panorama (equirectangular).
+svm::projector camera_of(std::string const& name, std::vector<svm::vec3> const& points, svm::vec3 const& eye) {
+  using namespace svm::detail;
+  svm::vec3 lo{HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  for (auto const& v : points)
+    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], v[k]), hi[k] = std::max(hi[k], v[k]);
+  svm::vec3 forward = sub3({(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2}, eye);
+  double widest = 0; // the largest angle between `forward` and a vertex's direction
+  if (norm3(forward) > 0) {
+    for (auto const& v : points) {
+      auto d = sub3(v, eye);
+      widest = norm3(d) > 0 ? std::max(widest, std::acos(std::clamp(dot3(unit3(d), unit3(forward)), -1.0, 1.0))) : std::numbers::pi;
+    }
+  } else {
+    forward = {1, 0, 0}, widest = std::numbers::pi;
+  }
+  svm::camera cam;
+  cam.forward = forward;
+  cam.up = std::abs(forward[2]) > (1 - 1e-9) * norm3(forward) ? svm::vec3{0, 1, 0} : svm::vec3{0, 0, 1};
+  bool panorama = name == "equirectangular" || (name == "auto" && widest > std::numbers::pi / 3);
+  if (panorama) {
+    cam.width = 720, cam.height = 360, cam.hfov = 360;
+    return svm::projector(cam, svm::projection::equirectangular);
+  }
+  cam.width = 480, cam.height = 360;
+  // The smallest view that holds every vertex, with a margin: a vertex at
+  // (x, y, z) in the camera's frame is at (x / z, y / z) in the image plane,
+  // whose half width is tan(hfov / 2) and half height that · height / width.
+  // Aimed at the middle of the vertices' image, then fitted again.
+  double half = 1e-3;
+  for (int round = 0; round < 3; ++round) {
+    svm::projector frame(cam, svm::projection::perspective);
+    double x0 = HUGE_VAL, x1 = -HUGE_VAL, y0 = HUGE_VAL, y1 = -HUGE_VAL;
+    for (auto const& v : points)
+      if (auto l = frame.local(sub3(v, eye)); l[2] > 0) {
+        x0 = std::min(x0, l[0] / l[2]), x1 = std::max(x1, l[0] / l[2]);
+        y0 = std::min(y0, l[1] / l[2]), y1 = std::max(y1, l[1] / l[2]);
+      }
+    if (!(x0 <= x1)) break;
+    half = std::max({1e-3, (x1 - x0) / 2, (y1 - y0) / 2 * cam.width / cam.height});
+    if (round < 2) cam.forward = frame.world({(x0 + x1) / 2, (y0 + y1) / 2, 1});
+  }
+  cam.hfov = std::clamp(2 * std::atan(1.15 * half) * 180 / std::numbers::pi, 1.0, 150.0);
+  return svm::projector(cam, svm::projection::perspective);
+}
+
+/// The colour of cell `k` of a picture: the palette's, a little darker.
+svm::render::rgb cell_colour(std::size_t k) {
+  auto c = svm::render::palette(static_cast<std::int64_t>(k));
+  return {c.r * 0.85, c.g * 0.85, c.b * 0.85};
+}
+
+/// E3: closed polyhedra (OFF, OBJ, STL, PLY, glTF), drawn by the library's
+/// own renderer from a fixed eye: the inside cells, clipped to a box around
+/// the input, as solids (each its colour); the input's edges as a wireframe
+/// over them; the newest cut as a red section of its cell.  A cell alone
+/// cannot be drawn (what hides what needs them all), so `draw_cell` collects
+/// the inside cells and `draw_input`, which comes after them, draws them.
+struct space_geometry {
+  using G = boolean::space_kernel;
+  static constexpr char const* name = "e3";
+  double width = 480, height = 360;
+  std::vector<G::sub_hyperplane> faces;
+  std::vector<std::vector<svm::vec3>> outlines; ///< the input's faces, for the wireframe
+  std::array<rational, 3> lo{}, hi{};
+  bool framed = false;
+  mutable std::vector<G::polytope> inside;
+
+  std::vector<G::sub_hyperplane> read(std::string const& file) {
+    auto scene = geometry::io::read_scene(file);
+    boolean::solid s;
+    try {
+      s = boolean::from_scene(scene);
+    } catch (std::invalid_argument const& e) {
+      throw usage_error(file + ": " + e.what());
+    }
+    faces = s.boundary;
+    for (auto const& f : faces) {
+      auto v = geometry::e3::vertices(f);
+      if (!v) continue;
+      std::vector<svm::vec3> line;
+      for (auto const& p : *v) {
+        line.push_back({geometry::to_double(p.x()), geometry::to_double(p.y()), geometry::to_double(p.z())});
+        for (std::size_t k = 0; k < 3; ++k) {
+          if (!framed || p[k] < lo[k]) lo[k] = p[k];
+          if (!framed || p[k] > hi[k]) hi[k] = p[k];
+        }
+        framed = true;
+      }
+      outlines.push_back(std::move(line));
+    }
+    return faces;
+  }
+  static bsp::point_set<G, bool> tree_of(std::vector<G::sub_hyperplane> const& pieces) {
+    return bsp::build_point_set<G>(pieces, true, false, bsp::balanced(geometry::e3::axis_median_cut<rational>{}));
+  }
+  /// The box the pictures show: the input's, with a margin.
+  G::polytope clip_box() const {
+    rational pad(0);
+    for (std::size_t k = 0; k < 3; ++k) pad = std::max(pad, (hi[k] - lo[k]) * rational(3, 20));
+    return geometry::e3::box<rational>({lo[0] - pad, lo[1] - pad, lo[2] - pad}, {hi[0] + pad, hi[1] + pad, hi[2] + pad});
+  }
+  static std::optional<G::polytope> clipped(G::polytope c, G::polytope const& box) {
+    for (auto const& f : box.faces) {
+      auto r = geometry::e3::split(c, f.support);
+      if (!r.positive) return std::nullopt;
+      c = std::move(*r.positive);
+    }
+    return c;
+  }
+  /// The eye: in front of the box, to the right and above (exact).
+  geometry::e3::point<rational> eye() const {
+    rational size(0);
+    for (std::size_t k = 0; k < 3; ++k) size = std::max(size, hi[k] - lo[k]);
+    return {(lo[0] + hi[0]) / 2 + size * rational(3, 2), (lo[1] + hi[1]) / 2 - size * 2, (lo[2] + hi[2]) / 2 + size * rational(5, 4)};
+  }
+  static svm::vec3 to_vec(geometry::e3::point<rational> const& p) {
+    return {geometry::to_double(p.x()), geometry::to_double(p.y()), geometry::to_double(p.z())};
+  }
+  svm::projector projector() const {
+    std::vector<svm::vec3> corners;
+    for (auto const& l : outlines) corners.insert(corners.end(), l.begin(), l.end());
+    return camera_of("perspective", corners, to_vec(eye()));
+  }
+  std::string text(G::hyperplane const& h) const {
+    return linear_text({{h.n[0], "x"}, {h.n[1], "y"}, {h.n[2], "z"}, {h.n[3], ""}}) + " (positive side where the left side is > 0)";
+  }
+  std::string short_text(G::hyperplane const& h) const {
+    rational s = h.n[0] != 0 ? h.n[0] : h.n[1] != 0 ? h.n[1] : h.n[2];
+    int k = s < 0 ? -1 : 1;
+    return linear_text({{rational(k * h.n[0]), "x"}, {rational(k * h.n[1]), "y"}, {rational(k * h.n[2]), "z"}, {rational(k * h.n[3]), ""}});
+  }
+  json region(G::polytope const& c) const {
+    auto v = geometry::e3::volume(c);
+    return {{"faces", c.faces.size()}, {"volume", v ? json(exact_text(*v)) : json(nullptr)}};
+  }
+  void add(space_geometry const& o) {
+    faces.insert(faces.end(), o.faces.begin(), o.faces.end());
+    outlines.insert(outlines.end(), o.outlines.begin(), o.outlines.end());
+  }
+  void draw_cell(std::ostream& o, G::polytope const& c, std::optional<bool> label, std::string const& name) const {
+    if (label && *label) {
+      inside.push_back(c);
+      o << "<desc " << cell_attributes(name, label) << "/>\n";
+    }
+  }
+  void draw_input(std::ostream& o) const {
+    using namespace svm::detail;
+    auto pr = projector();
+    auto e = eye();
+    auto box = clip_box();
+    // The inside cells' faces, each labelled by its cell.
+    std::vector<svm::convex_piece<rational>> pieces;
+    std::vector<svm::render::face_info> infos;
+    for (std::size_t k = 0; k < inside.size(); ++k) {
+      auto c = clipped(inside[k], box);
+      if (!c) continue;
+      for (auto const& f : c->faces) {
+        auto v = geometry::e3::vertices(f);
+        if (!v || v->size() < 3) continue;
+        svm::render::face_info fi;
+        fi.colour = cell_colour(k);
+        svm::vec3 n{geometry::to_double(f.support.n[0]), geometry::to_double(f.support.n[1]), geometry::to_double(f.support.n[2])};
+        fi.normal = unit3(n);
+        fi.centre = to_vec(v->front());
+        fi.offset = dot3(fi.normal, fi.centre);
+        pieces.push_back({f, static_cast<std::int64_t>(infos.size())});
+        infos.push_back(fi);
+      }
+    }
+    inside.clear();
+    svm::render::options ro;
+    ro.eye = to_vec(e);
+    auto d = svm::render::draw(svm::build(pieces, e, pr.window_options()), pr, infos, ro);
+    d.background.reset();
+    std::string inner = svm::render::to_svg(d);
+    o << inner.substr(inner.find("<svg"));
+    // The input's edges, hidden ones too, over the solids.
+    o << "<path fill=\"none\" stroke=\"#1f4e99\" stroke-width=\"1\" stroke-opacity=\"0.7\" d=\"";
+    for (auto const& l : outlines)
+      for (std::size_t i = 0; i < l.size(); ++i) {
+        auto a = pr.project(unit3(sub3(l[i], ro.eye))), b = pr.project(unit3(sub3(l[(i + 1) % l.size()], ro.eye)));
+        o << 'M' << fmt(a.x) << ',' << fmt(a.y) << " L" << fmt(b.x) << ',' << fmt(b.y) << ' ';
+      }
+    o << "\"/>\n";
+  }
+  void draw_split(std::ostream& o, G::hyperplane const& h, G::polytope const& cell, long, bool newest) const {
+    if (!newest) return;
+    auto c = clipped(cell, clip_box());
+    if (!c) return;
+    std::optional<G::sub_hyperplane> s = geometry::e3::whole_plane(h);
+    for (auto const& f : c->faces) {
+      if (!s) break;
+      s = geometry::e3::split(*s, f.support).positive;
+    }
+    if (!s) return;
+    auto v = geometry::e3::vertices(*s);
+    if (!v) return;
+    auto pr = projector();
+    auto e = to_vec(eye());
+    o << "<polygon fill=\"#d62728\" fill-opacity=\"0.18\" stroke=\"#d62728\" stroke-width=\"2\" data-split=\"newest\" points=\"";
+    for (auto const& p : *v) {
+      auto q = pr.project(svm::detail::unit3(svm::detail::sub3(to_vec(p), e)));
+      o << fmt(q.x) << ',' << fmt(q.y) << ' ';
+    }
+    o << "\"/>\n";
+  }
+};
+
 // --- Steps ---------------------------------------------------------------
 
 struct step {
@@ -590,7 +802,7 @@ void replay(Geo const& geo, Tree const& t, std::string const& phase, bool show_i
     json head{{"phase", phase}};
     if (k == 0) {
       std::string g = Geo::name;
-      caption = phase + ": the whole " + (g == "e1" ? "line" : g == "s1" ? "circle" : g == "s2" ? "sphere" : "plane") +
+      caption = phase + ": the whole " + (g == "e1" ? "line" : g == "s1" ? "circle" : g == "s2" ? "sphere" : g == "e3" ? "space" : "plane") +
                 ", one cell to build";
       head["operation"] = "start";
     } else {
@@ -660,8 +872,9 @@ std::string geometry_of(std::string const& given, std::string const& file) {
   if (ext == ".s1") return "s1";
   if (ext == ".wkt") return "e2";
   if (ext == ".geojson" || ext == ".json") return "s2";
+  if (ext == ".off" || ext == ".obj" || ext == ".stl") return "e3";
   throw usage_error(file + ": cannot tell the geometry from '" + ext +
-                    "' (.e1 intervals, .s1 arcs, .wkt polygons, .geojson spherical polygons; or give --geometry)");
+                    "' (.e1 intervals, .s1 arcs, .wkt polygons, .geojson spherical polygons, .off/.obj/.stl solids; or give --geometry)");
 }
 
 template <class Geo> bsp::point_set<typename Geo::G, bool> tree_of(std::vector<typename Geo::G::sub_hyperplane> const& pieces) {
@@ -709,13 +922,17 @@ template <class Geo> std::vector<step> steps_of(explain_job const& job, json& tr
   } else if constexpr (requires { a.lo; }) {
     a.lo = std::min(a.lo, b.lo), a.hi = std::max(a.hi, b.hi);
     b.lo = a.lo, b.hi = a.hi;
+  } else if constexpr (requires { a.clip_box(); }) {
+    for (std::size_t k = 0; k < 3; ++k) a.lo[k] = std::min(a.lo[k], b.lo[k]), a.hi[k] = std::max(a.hi[k], b.hi[k]);
+    b.lo = a.lo, b.hi = a.hi;
   } else if constexpr (requires { a.w; }) {
     a.face({a.w[0] + b.w[0], a.w[1] + b.w[1], a.w[2] + b.w[2]});
     b.u = a.u, b.v = a.v, b.w = a.w, b.front = a.front;
   }
   auto ta = tree_of<Geo>(pa), tb = tree_of<Geo>(pb);
-  whole(a, ta, "a", "operand", "operand A: its tree's cells (blue: inside)", out);
-  whole(b, tb, "b", "operand", "operand B: its tree's cells (blue: inside)", out);
+  std::string inside = std::string(Geo::name) == "e3" ? "(coloured: inside)" : "(blue: inside)";
+  whole(a, ta, "a", "operand", "operand A: its tree's cells " + inside, out);
+  whole(b, tb, "b", "operand", "operand B: its tree's cells " + inside, out);
   std::string op = job.op;
   auto f = [&](bool x, bool y) { return label_op(op, x, y); };
   auto merged = bsp::merge_unreduced(ta, tb, f);
@@ -1019,57 +1236,12 @@ std::vector<step> visibility2d_steps(explain_job const& job, json& trace) {
   return out;
 }
 
-/// The camera of a picture of the scene from `eye`: `auto` looks at the
-/// middle of the scene's box in perspective when every vertex is within
-/// 60 degrees of that direction, else takes the panorama (equirectangular).
-svm::projector camera_of(std::string const& name, std::vector<svm::polygon<rational>> const& polys, svm::vec3 const& eye) {
-  using namespace svm::detail;
-  svm::vec3 lo{HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
-  std::vector<svm::vec3> points;
+/// The vertices of polygons, in doubles.
+std::vector<svm::vec3> points_of(std::vector<svm::polygon<rational>> const& polys) {
+  std::vector<svm::vec3> out;
   for (auto const& p : polys)
-    for (auto const& q : p.vertices) {
-      svm::vec3 v{geometry::to_double(q.x()), geometry::to_double(q.y()), geometry::to_double(q.z())};
-      points.push_back(v);
-      for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], v[k]), hi[k] = std::max(hi[k], v[k]);
-    }
-  svm::vec3 forward = sub3({(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2}, eye);
-  double widest = 0; // the largest angle between `forward` and a vertex's direction
-  if (norm3(forward) > 0) {
-    for (auto const& v : points) {
-      auto d = sub3(v, eye);
-      widest = norm3(d) > 0 ? std::max(widest, std::acos(std::clamp(dot3(unit3(d), unit3(forward)), -1.0, 1.0))) : std::numbers::pi;
-    }
-  } else {
-    forward = {1, 0, 0}, widest = std::numbers::pi;
-  }
-  svm::camera cam;
-  cam.forward = forward;
-  cam.up = std::abs(forward[2]) > (1 - 1e-9) * norm3(forward) ? svm::vec3{0, 1, 0} : svm::vec3{0, 0, 1};
-  bool panorama = name == "equirectangular" || (name == "auto" && widest > std::numbers::pi / 3);
-  if (panorama) {
-    cam.width = 720, cam.height = 360, cam.hfov = 360;
-    return svm::projector(cam, svm::projection::equirectangular);
-  }
-  cam.width = 480, cam.height = 360;
-  // The smallest view that holds every vertex, with a margin: a vertex at
-  // (x, y, z) in the camera's frame is at (x / z, y / z) in the image plane,
-  // whose half width is tan(hfov / 2) and half height that · height / width.
-  // Aimed at the middle of the vertices' image, then fitted again.
-  double half = 1e-3;
-  for (int round = 0; round < 3; ++round) {
-    svm::projector frame(cam, svm::projection::perspective);
-    double x0 = HUGE_VAL, x1 = -HUGE_VAL, y0 = HUGE_VAL, y1 = -HUGE_VAL;
-    for (auto const& v : points)
-      if (auto l = frame.local(sub3(v, eye)); l[2] > 0) {
-        x0 = std::min(x0, l[0] / l[2]), x1 = std::max(x1, l[0] / l[2]);
-        y0 = std::min(y0, l[1] / l[2]), y1 = std::max(y1, l[1] / l[2]);
-      }
-    if (!(x0 <= x1)) break;
-    half = std::max({1e-3, (x1 - x0) / 2, (y1 - y0) / 2 * cam.width / cam.height});
-    if (round < 2) cam.forward = frame.world({(x0 + x1) / 2, (y0 + y1) / 2, 1});
-  }
-  cam.hfov = std::clamp(2 * std::atan(1.15 * half) * 180 / std::numbers::pi, 1.0, 150.0);
-  return svm::projector(cam, svm::projection::perspective);
+    for (auto const& q : p.vertices) out.push_back({geometry::to_double(q.x()), geometry::to_double(q.y()), geometry::to_double(q.z())});
+  return out;
 }
 
 /// The camera of a parallel view's picture: looking along the view at its
@@ -1158,7 +1330,7 @@ std::vector<step> visibility_steps(explain_job const& job, json& trace, std::vec
   });
   std::optional<svm::projector> made;
   try {
-    made.emplace(parallel ? parallel_camera_of(*parallel, data->prepared) : camera_of(job.projection, polys, eye_d));
+    made.emplace(parallel ? parallel_camera_of(*parallel, data->prepared) : camera_of(job.projection, points_of(polys), eye_d));
   } catch (std::invalid_argument const& e) {
     throw usage_error(std::string("--projection: ") + e.what());
   }
@@ -1242,13 +1414,13 @@ void explain_job::add_to(CLI::App& app) {
   command->require_subcommand(1);
   auto common = [&](CLI::App* c) {
     c->add_option("--geometry", geometry,
-                  "e1 (intervals 'A B' per line), s1 (arcs 'X1,Y1 X2,Y2' per line), e2 (WKT or GeoJSON polygons) or s2 (GeoJSON or WKT "
-                  "polygons in longitude and latitude); default from the extension")
-        ->check(CLI::IsMember({"e1", "s1", "e2", "s2"}));
+                  "e1 (intervals 'A B' per line), s1 (arcs 'X1,Y1 X2,Y2' per line), e2 (WKT or GeoJSON polygons), s2 (GeoJSON or WKT "
+                  "polygons in longitude and latitude) or e3 (closed polyhedra: OFF, OBJ or STL); default from the extension")
+        ->check(CLI::IsMember({"e1", "s1", "e2", "s2", "e3"}));
     c->add_option("-o,--output", output, "the folder to write (made if missing; its earlier pictures are replaced)")->required();
   };
   build = command->add_subcommand("build", "building a point-set tree from a boundary (Thibault and Naylor), one node at a time");
-  build->add_option("input", input, "the region: .e1, .s1, .wkt or .geojson")->required();
+  build->add_option("input", input, "the region: .e1, .s1, .wkt, .geojson, or a closed polyhedron (.off, .obj, .stl)")->required();
   common(build);
   merge = command->add_subcommand("merge", "a Boolean operation by merging two trees (Naylor, Amanatides and Thibault), then reducing");
   merge->add_option("a", input, "the first region")->required();
@@ -1293,6 +1465,7 @@ void explain_job::run() const {
     steps = g == "e1"   ? steps_of<line_geometry>(*this, trace)
             : g == "s1" ? steps_of<circle_geometry>(*this, trace)
             : g == "s2" ? steps_of<sphere_geometry>(*this, trace)
+            : g == "e3" ? steps_of<space_geometry>(*this, trace)
                         : steps_of<plane_geometry>(*this, trace);
   }
   // Written only once everything is made; earlier pictures in the folder go first.
