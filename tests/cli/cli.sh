@@ -836,6 +836,14 @@ check "explain build (e3): exit status 0" test $? -eq 0
 quiet "$genbsp" explain merge "$ex/cube.off" "$ex/tet.off" --op difference -o "$ex/merge-e3"
 check "explain merge (e3): exit status 0" test $? -eq 0
 "$genbsp" csg "$ex/cube.off" "$ex/tet.off" --op difference -o "$ex/cube-tet.off" >"$ex/csg.json"
+# Boxes whose corners compare differently coordinate by coordinate and as words.
+printf 'OFF\n8 6 0\n0 5 0\n1 5 0\n1 6 0\n0 6 0\n0 5 1\n1 5 1\n1 6 1\n0 6 1\n4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n' >"$ex/box-a.off"
+printf 'OFF\n8 6 0\n1 0 0\n2 0 0\n2 1 0\n1 1 0\n1 0 1\n2 0 1\n2 1 1\n1 1 1\n4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n' >"$ex/box-b.off"
+quiet "$genbsp" explain merge "$ex/box-a.off" "$ex/box-b.off" --op union -o "$ex/merge-boxes"
+check "explain merge (e3): two boxes apart, in one frame" python3 -c '
+import json, sys; from fractions import Fraction as F
+t = json.load(open(sys.argv[1])); last = t["steps"][-1]
+assert sum(F(c["volume"]) for c in last["cells"] if c["label"] is True) == 2' "$ex/merge-boxes/trace.json"
 check "explain (e3): cells inside add up to the solids' volumes, exactly" python3 - "$ex" <<'PY'
 import json, os, sys
 import xml.etree.ElementTree as ET
@@ -859,7 +867,9 @@ csg = F(json.load(open(os.path.join(ex, "csg.json")))["volume_exact"])
 assert inside(m["steps"][-1]) == csg == F(43, 6), (inside(m["steps"][-1]), csg)
 assert inside(m["steps"][0]) == 8 and inside(m["steps"][1]) == F(4, 3)   # the operands
 root = ET.parse(os.path.join(ex, "build-e3", b["steps"][-1]["picture"])).getroot()
-assert any(e.tag.endswith("path") and e.get("fill") for e in root.iter()), "no solid drawn"
+assert any(e.tag.endswith("path") and e.get("fill") not in (None, "none") for e in root.iter()), "no solid drawn"
+first = ET.parse(os.path.join(ex, "build-e3", b["steps"][0]["picture"])).getroot()
+assert not any(e.tag.endswith("path") and e.get("fill") not in (None, "none") for e in first.iter()), "a solid before any cell is inside"
 PY
 quiet "$genbsp" explain build "$ex/a.e1" -o "$ex/build-e2"
 check "explain: a second run replaces the earlier pictures" test "$(ls "$ex/build-e2" | grep -c '^step-')" -eq 7

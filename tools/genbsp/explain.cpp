@@ -568,7 +568,10 @@ svm::projector camera_of(std::string const& name, std::vector<svm::vec3> const& 
       }
     if (!(x0 <= x1)) break;
     half = std::max({1e-3, (x1 - x0) / 2, (y1 - y0) / 2 * cam.width / cam.height});
-    if (round < 2) cam.forward = frame.world({(x0 + x1) / 2, (y0 + y1) / 2, 1});
+    if (round < 2) {
+      cam.forward = frame.world({(x0 + x1) / 2, (y0 + y1) / 2, 1});
+      cam.up = std::abs(cam.forward[2]) > (1 - 1e-9) * norm3(cam.forward) ? svm::vec3{0, 1, 0} : svm::vec3{0, 0, 1};
+    }
   }
   cam.hfov = std::clamp(2 * std::atan(1.15 * half) * 180 / std::numbers::pi, 1.0, 150.0);
   return svm::projector(cam, svm::projection::perspective);
@@ -580,7 +583,7 @@ svm::render::rgb cell_colour(std::size_t k) {
   return {c.r * 0.85, c.g * 0.85, c.b * 0.85};
 }
 
-/// E3: closed polyhedra (OFF, OBJ, STL, PLY, glTF), drawn by the library's
+/// E3: closed polyhedra (OFF, OBJ, STL), drawn by the library's
 /// own renderer from a fixed eye: the inside cells, clipped to a box around
 /// the input, as solids (each its colour); the input's edges as a wireframe
 /// over them; the newest cut as a red section of its cell.  A cell alone
@@ -919,11 +922,12 @@ template <class Geo> std::vector<step> steps_of(explain_job const& job, json& tr
     v.x0 = std::min(v.x0, b.view.x0), v.y0 = std::min(v.y0, b.view.y0), v.x1 = std::max(v.x1, b.view.x1), v.y1 = std::max(v.y1, b.view.y1);
     a.height = a.pixels * (v.y1 - v.y0) / (v.x1 - v.x0);
     b.view = a.view, b.height = a.height;
+  } else if constexpr (requires { a.clip_box(); }) {
+    // Coordinate by coordinate (arrays compare lexicographically).
+    for (std::size_t k = 0; k < 3; ++k) a.lo[k] = std::min(a.lo[k], b.lo[k]), a.hi[k] = std::max(a.hi[k], b.hi[k]);
+    b.lo = a.lo, b.hi = a.hi;
   } else if constexpr (requires { a.lo; }) {
     a.lo = std::min(a.lo, b.lo), a.hi = std::max(a.hi, b.hi);
-    b.lo = a.lo, b.hi = a.hi;
-  } else if constexpr (requires { a.clip_box(); }) {
-    for (std::size_t k = 0; k < 3; ++k) a.lo[k] = std::min(a.lo[k], b.lo[k]), a.hi[k] = std::max(a.hi[k], b.hi[k]);
     b.lo = a.lo, b.hi = a.hi;
   } else if constexpr (requires { a.w; }) {
     a.face({a.w[0] + b.w[0], a.w[1] + b.w[1], a.w[2] + b.w[2]});
@@ -1085,8 +1089,9 @@ struct view_piece {
 /// The final view split where its walls' pieces meet: each wall's arc of
 /// the library's view (`svm::visibility` of the input segments, bounded
 /// degree) cut at the ends of the pieces the depth order made of that wall,
-/// each part labelled with its piece's rank.  The cut points are made for
-/// the picture only; nothing is computed from them.
+/// each part labelled with its piece's rank.  The cut points (constructed)
+/// serve the pictures and the ranks only, compared exactly along their wall;
+/// the view itself is computed from the input.
 std::vector<view_piece> ranked_view(segment_scene const& s, svm::visibility_region<rational> const& region, svm::wall_scene<rational> const& walls) {
   std::vector<view_piece> out;
   auto direction = [&](point2 const& p) { return std::array<rational, 2>{p.x() - s.eye.x(), p.y() - s.eye.y()}; };
@@ -1116,6 +1121,7 @@ std::vector<view_piece> ranked_view(segment_scene const& s, svm::visibility_regi
           if ((c - t0) * (c - t1) < 0) cuts.push_back(c);
       }
     std::sort(cuts.begin(), cuts.end());
+    cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end()); // two pieces of a wall share their meeting point
     if (t1 < t0) std::reverse(cuts.begin(), cuts.end());
     for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
       rational mid = (cuts[i] + cuts[i + 1]) / 2;
@@ -1363,6 +1369,15 @@ std::vector<step> visibility_steps(explain_job const& job, json& trace, std::vec
     }
     o << "\"/>\n";
   };
+  // Which fragments are visible at all, in every direction (the pictures'
+  // maps see only the frame's): front to back, a fragment is visible when it
+  // arrives exactly when it is in the final map.
+  std::vector<char> visible(order.size(), 0);
+  {
+    auto all = svm::build(order, eye);
+    for (auto const& f : all.map.faces())
+      if (f.label >= 0) visible[static_cast<std::size_t>(f.label)] = 1;
+  }
   std::vector<step> out;
   for (std::size_t k = 0; k <= order.size(); ++k) {
     std::vector<svm::convex_piece<rational>> arrived(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(k));
@@ -1370,7 +1385,7 @@ std::vector<step> visibility_steps(explain_job const& job, json& trace, std::vec
     auto areas = svm::face_areas(vm.map);
     std::map<std::int64_t, double> by_label;
     for (std::size_t f = 0; f < areas.size(); ++f) by_label[vm.map.faces()[f].label] += areas[f];
-    bool seen = k > 0 && by_label.count(static_cast<std::int64_t>(k - 1));
+    bool seen = k > 0 && visible[k - 1];
     json shown = json::array();
     for (auto const& [label, area] : by_label)
       if (label >= 0) shown.push_back({{"rank", label}, {"polygon", face_of[static_cast<std::size_t>(label)]}, {"area", area}});
@@ -1436,7 +1451,7 @@ void explain_job::add_to(CLI::App& app) {
   seen->add_option("--eye", eye, "the eye X,Y, read exactly, on no wall")->required();
   seen->add_option("-o,--output", output, "the folder to write (made if missing; its earlier pictures are replaced)")->required();
   space = command->add_subcommand("visibility", "the spherical visibility map of an eye in a scene, growing as fragments arrive front to back");
-  space->add_option("input", input, "the scene: OFF, OBJ, STL, PLY or glTF, at most 200 convex polygons")->required();
+  space->add_option("input", input, "the scene: OFF, OBJ or STL, at most 200 convex polygons")->required();
   space->add_option("--eye", eye, "the eye X,Y,Z, read exactly");
   space->add_option("--view-dir", view_dir, "or a parallel view along DX,DY,DZ (exact; no --eye)");
   space->add_option("--projection", projection,
