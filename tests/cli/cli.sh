@@ -890,6 +890,26 @@ expect_error "explain: an unknown extension" "cannot tell the geometry from '.tx
 expect_error "explain: operands of two geometries" 'different geometries' "$genbsp" explain merge "$ex/a.e1" "$ex/a.wkt" -o "$ex/o"
 expect_error "explain: a missing subcommand" 'subcommand' "$genbsp" explain "$ex/a.e1" -o "$ex/o"
 
+# Memory: --max-memory (or GENBSP_MAX_MEMORY) ends a run that needs more with
+# one line and status 2, nothing written.  (Not under the address
+# sanitizer, whose shadow memory is address space too.)
+if ldd "$genbsp" 2>/dev/null | grep -q 'libasan\|libtsan'; then
+  echo "skip: --max-memory under a sanitizer"
+else
+  "$genbsp" scene sphere --n 60 -o "$work/sphere60.off" >/dev/null
+  expect_error "--max-memory: a map past the limit" '^genbsp: out of memory \(--max-memory 64M\); nothing was written$' \
+    "$genbsp" --max-memory 64M map "$work/sphere60.off" --eye 0.1,0.2,0.3 -o "$work/oom.json"
+  check "--max-memory: no output file" test ! -e "$work/oom.json"
+  expect_error "--max-memory after the subcommand" 'out of memory \(--max-memory 64M\)' \
+    "$genbsp" render "$work/sphere60.off" --eye 0.1,0.2,0.3 -o "$work/oom.svg" --max-memory 64M
+  check "--max-memory: no picture" test ! -e "$work/oom.svg"
+  expect_error "GENBSP_MAX_MEMORY" 'out of memory \(--max-memory 64M\)' env GENBSP_MAX_MEMORY=64M "$genbsp" csg "$work/sphere60.off" "$work/sphere60.off" --op union -o "$work/oom.off"
+  check "GENBSP_MAX_MEMORY: no mesh" test ! -e "$work/oom.off"
+  "$genbsp" --max-memory 1G map "$work/sphere60.off" --eye 0.1,0.2,0.3 -o "$work/fits.json" >/dev/null
+  check "--max-memory: a run within the limit writes its map" test -s "$work/fits.json"
+fi
+expect_error "--max-memory: not a size" "--max-memory: expected a size such as 512M or 2G, got '12Q'" "$genbsp" --max-memory 12Q scene random --n 2 -o "$work/x.off"
+expect_error "--max-memory: too small" '--max-memory: at least 64M' "$genbsp" --max-memory 1M scene random --n 2 -o "$work/x.off"
 for sub in map locate stats scene render view shadow bool csg visibility2d batch explain "explain build" "explain merge" "explain depth-order" "explain visibility2d" "explain visibility"; do
   "$genbsp" $sub --help >"$work/help" 2>&1
   check "$sub --help exits 0" test $? -eq 0

@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <new>
 #include <atomic>
 #include <chrono>
 #include <cstdio>
@@ -288,6 +289,8 @@ json run_batch(batch_plan const& plan, std::shared_ptr<scene_data const> const& 
         status = 2, error = e.what();
       } catch (geometry::io::read_error const& e) {
         status = 2, error = e.what();
+      } catch (std::bad_alloc const&) {
+        status = 2, error = "out of memory" + (memory_limit_text().empty() ? std::string() : " (--max-memory " + memory_limit_text() + ")");
       } catch (std::exception const& e) {
         status = 1, error = std::string("internal error: ") + e.what();
       }

@@ -26,7 +26,11 @@
 #include "common.hpp"
 #include "viewer_html.hpp"
 
+#include <gmp.h>
 #include <sys/resource.h>
+#include <cstdlib>
+#include <cstring>
+#include <new>
 #include <unistd.h>
 
 #include <chrono>
@@ -722,10 +726,53 @@ int run(std::vector<std::string> const& args) {
   return run(static_cast<int>(args.size()), argv.data());
 }
 
+namespace {
+
+/// "SIZE": bytes, or a number with K, M, G or T (powers of 1024), as bytes.
+std::uint64_t memory_size(std::string const& text) {
+  std::size_t used = 0;
+  double x = 0;
+  try {
+    x = std::stod(text, &used);
+  } catch (std::exception const&) {
+    used = 0;
+  }
+  std::string unit = text.substr(used);
+  for (auto& c : unit) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  if (unit.size() == 2 && unit[1] == 'B') unit.pop_back();
+  static std::map<std::string, double> const scale{{"", 1}, {"B", 1}, {"K", 0x1p10}, {"M", 0x1p20}, {"G", 0x1p30}, {"T", 0x1p40}};
+  auto it = scale.find(unit);
+  if (used == 0 || it == scale.end() || !(x > 0) || !(x * it->second < 0x1p62))
+    throw usage_error("--max-memory: expected a size such as 512M or 2G, got '" + text + "'");
+  auto bytes = static_cast<std::uint64_t>(x * it->second);
+  if (bytes < (std::uint64_t{64} << 20)) throw usage_error("--max-memory: at least 64M (the program itself needs that much address space)");
+  return bytes;
+}
+
+/// GMP's allocation, throwing `std::bad_alloc` when memory runs out instead
+/// of aborting: the program then ends with its one-line message.
+void* gmp_allocate(std::size_t n) {
+  if (void* p = std::malloc(n)) return p;
+  throw std::bad_alloc();
+}
+void* gmp_reallocate(void* p, std::size_t, std::size_t n) {
+  if (void* q = std::realloc(p, n)) return q;
+  throw std::bad_alloc();
+}
+void gmp_free(void* p, std::size_t) { std::free(p); }
+
+} // namespace
+
 int run(int argc, char** argv) {
   CLI::App app{"genbsp: binary space partitioning for exact geometric computing"};
   app.require_subcommand(1);
+  app.fallthrough(); // --max-memory after the subcommand too
   app.set_version_flag("--version", "genbsp " + version(), "print the version and the source revision, and exit");
+  std::string max_memory;
+  app.add_option("--max-memory", max_memory,
+                 "stop with one line and exit status 2, writing nothing, rather than use more than SIZE of memory (address space): "
+                 "bytes, or a number with K, M, G or T (powers of 1024)")
+      ->envname("GENBSP_MAX_MEMORY");
 
   map_job mj;
   std::string map_out;
@@ -855,6 +902,17 @@ int run(int argc, char** argv) {
   } catch (CLI::ParseError const& e) {
     std::string what = e.what();
     throw usage_error(what.substr(0, what.find('\n')) + " (try --help)");
+  }
+  if (!max_memory.empty()) {
+    auto bytes = memory_size(max_memory);
+    if (!program_owns_process())
+      throw usage_error("--max-memory: only for the genbsp program, which owns its process (from Python: resource.setrlimit)");
+    rlimit r{};
+    getrlimit(RLIMIT_AS, &r);
+    if (r.rlim_max != RLIM_INFINITY && bytes > r.rlim_max) bytes = r.rlim_max;
+    r.rlim_cur = static_cast<rlim_t>(bytes);
+    if (setrlimit(RLIMIT_AS, &r) != 0) throw usage_error("--max-memory: the system refused the limit (" + std::string(std::strerror(errno)) + ")");
+    memory_limit_text() = max_memory;
   }
   // map, stats and render check what they can before reading the scene (see `load`).
   if (parse_only() && !*map && !*stats && !*render) return 0;
@@ -1233,8 +1291,14 @@ int run(int argc, char** argv) {
 
 
 int run_main(int argc, char** argv) {
+  program_owns_process() = true;
+  mp_set_memory_functions(gmp_allocate, gmp_reallocate, gmp_free);
   try {
     return run(argc, argv);
+  } catch (std::bad_alloc const&) {
+    std::cerr << "genbsp: out of memory" << (memory_limit_text().empty() ? "" : " (--max-memory " + memory_limit_text() + ")")
+              << "; nothing was written\n";
+    return 2;
   } catch (usage_error const& e) {
     std::cerr << "genbsp: " << e.what() << "\n";
     return 2;

@@ -50,6 +50,20 @@ inline bool& parse_only() {
   return b;
 }
 
+/// Whether `run` serves the genbsp program (set by `run_main`), which owns
+/// its process: only then may `--max-memory` limit the process's memory.
+inline bool& program_owns_process() {
+  static bool b = false;
+  return b;
+}
+
+/// The memory limit the program runs under (`--max-memory`), as given; empty
+/// when none.  Named in the out-of-memory message.
+inline std::string& memory_limit_text() {
+  static std::string s;
+  return s;
+}
+
 /// Thrown, when `parse_only()`, by a command that has checked all it can
 /// check without reading its scene.
 struct options_checked {};
