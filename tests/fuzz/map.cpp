@@ -10,7 +10,7 @@
 //     edge's midpoint and of 16 directions from the input, wherever the ray
 //     caster's answer is determined.
 // Any failed check aborts, with the reason on standard error.
-#include "../svm/ray_cast.hpp"
+#include "input.hpp"
 
 #include <svm/build.hpp>
 #include <svm/dcel.hpp>
@@ -29,8 +29,7 @@ using Q = geometry::rational;
 namespace {
 
 [[noreturn]] void fail(char const* what, long a = 0, long b = 0) {
-  std::fprintf(stderr, "fuzz_map: %s (%ld, %ld)\n", what, a, b);
-  std::abort();
+  fuzz::fail("fuzz_map", std::string(what) + " (" + std::to_string(a) + ", " + std::to_string(b) + ")");
 }
 
 void check(std::vector<triangle> const& tris, ivec eye, std::vector<ivec> const& directions) {
@@ -40,8 +39,7 @@ void check(std::vector<triangle> const& tris, ivec eye, std::vector<ivec> const&
     auto vm = svm::build<Q>(polys, e, {.simplify = simplify});
     auto problems = svm::check_invariants(vm.map);
     if (!problems.empty()) {
-      std::fprintf(stderr, "fuzz_map: %s\n", problems.front().c_str());
-      std::abort();
+      fuzz::fail("fuzz_map", problems.front());
     }
     double sum = 0;
     for (double a : svm::face_areas(vm.map)) {
@@ -62,22 +60,8 @@ void check(std::vector<triangle> const& tris, ivec eye, std::vector<ivec> const&
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(std::uint8_t const* data, std::size_t size) {
-  std::size_t at = 0;
-  auto byte = [&]() -> long { return at < size ? data[at++] : 0; };
-  auto coord = [&] { return byte() % 9 - 4; };
-  auto point = [&] { return ivec{coord(), coord(), coord()}; };
-  ivec eye = point();
-  std::vector<triangle> tris;
-  for (long k = 0, shapes = 1 + byte() % 8; k < shapes && at < size; ++k) {
-    if (byte() % 4 == 0) {
-      ivec lo = point(), hi{lo[0] + 1 + byte() % 4, lo[1] + 1 + byte() % 4, lo[2] + 1 + byte() % 4};
-      add_box(tris, lo, hi, static_cast<int>(byte() % 2));
-    } else {
-      triangle t{{point(), point(), point()}};
-      if (nondegenerate(t)) tris.push_back(t);
-    }
-  }
-  std::erase_if(tris, [](triangle const& t) { return !nondegenerate(t); }); // a slanted box's faces may fold flat
+  fuzz::input in(data, size);
+  auto [eye, tris] = fuzz::read_scene(in);
   if (tris.empty()) return 0;
   std::vector<ivec> directions;
   for (auto const& t : tris)
@@ -86,7 +70,7 @@ extern "C" int LLVMFuzzerTestOneInput(std::uint8_t const* data, std::size_t size
       directions.push_back(sub(a, eye));
       directions.push_back({a[0] + b[0] - 2 * eye[0], a[1] + b[1] - 2 * eye[1], a[2] + b[2] - 2 * eye[2]});
     }
-  for (int k = 0; k < 16; ++k) directions.push_back({byte() % 17 - 8, byte() % 17 - 8, byte() % 17 - 8});
+  for (int k = 0; k < 16; ++k) directions.push_back({in.in(-8, 8), in.in(-8, 8), in.in(-8, 8)});
   check(tris, eye, directions);
   return 0;
 }
