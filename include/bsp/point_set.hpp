@@ -24,7 +24,9 @@ template <geometry G, label L = bool> using point_set = tree<G, none, L>;
 /// closed polygon mesh has them when its faces turn counter-clockwise seen from
 /// outside.  Cells behind a boundary piece get `inside`, the others `outside`.
 /// The boundary must be closed and consistently oriented; pieces may touch and
-/// share vertices, edges and faces.  A `bsp::cutting_policy` that offers free
+/// share vertices, edges and faces.  Where two parts of the region meet back
+/// to back (pieces lying in one hyperplane, opposite ways round, as where two
+/// polygons share part of an edge), both sides are inside.  A `bsp::cutting_policy` that offers free
 /// cuts, as `balanced` does, keeps the tree shallow on convex surfaces.
 template <geometry G, label L = bool, splitting_policy<G> Policy = input_order>
 point_set<G, L> build_point_set(std::vector<typename G::sub_hyperplane> boundary, L inside = L(true),
@@ -68,6 +70,10 @@ point_set<G, L> build_point_set(std::vector<typename G::sub_hyperplane> boundary
         neg.clear(), pos.clear();
     }
     bool free = h.has_value();
+    // A piece lying in the chosen hyperplane the other way round (the region
+    // on its positive side: two regions meeting there, back to back) makes
+    // the positive side inside too.
+    bool inside_in_front = false;
     if (!free) {
       h = G::supporting(w.pieces[d.piece]);
       for (auto& s : w.pieces) {
@@ -76,6 +82,7 @@ point_set<G, L> build_point_set(std::vector<typename G::sub_hyperplane> boundary
           continue;
         }
         auto r = G::split(s, *h);
+        if (r.is_coincident()) inside_in_front = inside_in_front || static_cast<int>(r.coincident) < 0;
         if (r.negative) neg.push_back(std::move(*r.negative));
         if (r.positive) pos.push_back(std::move(*r.positive));
       }
@@ -83,7 +90,7 @@ point_set<G, L> build_point_set(std::vector<typename G::sub_hyperplane> boundary
     node_id n = t.add_interior(std::move(*h), node_id{}, node_id{});
     t.attach(w.parent, w.side, n);
     stack.push_back({std::move(neg), n, -1, free ? w.empty : inside});
-    stack.push_back({std::move(pos), n, +1, free ? w.empty : outside});
+    stack.push_back({std::move(pos), n, +1, free ? w.empty : inside_in_front ? inside : outside});
   }
   return t;
 }
@@ -167,47 +174,102 @@ template <geometry G> struct cell {
   node_id leaf;
 };
 
-/// The cells of all leaves reachable from the root (leaves whose cell has no
-/// interior are left out).
-template <geometry G, class N, class L> std::vector<cell<G>> cells(tree<G, N, L> const& t) {
-  std::vector<cell<G>> out;
+namespace detail {
+
+/// Calls `f(cell, leaf)` for the cell of every leaf reachable from the root
+/// through nodes `descend(node)` accepts (leaves whose cell has no interior
+/// are left out), in the order of `cells`, until `f` returns false.
+template <geometry G, class N, class L, class Descend, class F> void visit_cells(tree<G, N, L> const& t, Descend descend, F f) {
+  if (!descend(t.root())) return;
   std::vector<std::pair<node_id, typename G::polytope>> stack;
   stack.emplace_back(t.root(), G::whole_space());
   while (!stack.empty()) {
     auto [n, c] = std::move(stack.back());
     stack.pop_back();
     if (t.is_leaf(n)) {
-      out.push_back({std::move(c), n});
+      if (!f(std::move(c), n)) return;
       continue;
     }
+    node_id neg = t.negative(n), pos = t.positive(n);
     auto r = G::split(c, t.splitter(n));
-    if (r.negative) stack.emplace_back(t.negative(n), std::move(*r.negative));
-    if (r.positive) stack.emplace_back(t.positive(n), std::move(*r.positive));
+    if (r.negative && descend(neg)) stack.emplace_back(neg, std::move(*r.negative));
+    if (r.positive && descend(pos)) stack.emplace_back(pos, std::move(*r.positive));
   }
+}
+
+} // namespace detail
+
+/// The cells of all leaves reachable from the root (leaves whose cell has no
+/// interior are left out).
+template <geometry G, class N, class L> std::vector<cell<G>> cells(tree<G, N, L> const& t) {
+  std::vector<cell<G>> out;
+  detail::visit_cells(t, [](node_id) { return true; }, [&](typename G::polytope c, node_id n) {
+    out.push_back({std::move(c), n});
+    return true;
+  });
   return out;
 }
 
+namespace detail {
+
+/// The number a measure adds up to: `M`, or the value an optional `M` holds.
+template <class M, bool partial> struct sum_of {
+  using type = M;
+};
+template <class M> struct sum_of<M, true> {
+  using type = typename M::value_type;
+};
+
+/// For each interior node of `t` (by index), whether its subtree holds a
+/// reachable leaf labelled `which`.
+template <geometry G, class N, label L> std::vector<char> subtrees_holding(tree<G, N, L> const& t, L const& which) {
+  std::vector<char> holds(t.interior_count(), 0);
+  auto has = [&](node_id n) { return t.is_leaf(n) ? t.leaf_data(n) == which : holds[n.index()] != 0; };
+  if (t.is_leaf(t.root())) return holds;
+  std::vector<std::pair<node_id, bool>> stack{{t.root(), false}}; // (node, children done)
+  while (!stack.empty()) {
+    auto [n, done] = stack.back();
+    stack.pop_back();
+    if (done) {
+      holds[n.index()] = has(t.negative(n)) || has(t.positive(n));
+      continue;
+    }
+    stack.emplace_back(n, true);
+    for (node_id c : {t.negative(n), t.positive(n)})
+      if (!t.is_leaf(c)) stack.emplace_back(c, false);
+  }
+  return holds;
+}
+
+} // namespace detail
+
 /// The total measure (length, area, volume …, as `G::measure` gives it) of the
-/// cells labelled `which`; nothing when one of them is unbounded.
+/// cells labelled `which`; nothing when one of them is unbounded.  Only the
+/// subtrees that hold such a cell are descended, and cells are measured as
+/// they are reached, in the order of `cells`, so a sum of doubles is the same.
 template <geometry G, class N, label L>
   requires measured_space<G>
 measure_t<G> measure(tree<G, N, L> const& t, L const& which) {
   using M = measure_t<G>;
-  if constexpr (partial_measure<M>) {
-    typename M::value_type sum(0);
-    for (auto const& c : cells(t)) {
-      if (!(t.leaf_data(c.leaf) == which)) continue;
-      auto m = G::measure(c.region);
-      if (!m) return std::nullopt;
-      sum = sum + *m;
-    }
-    return sum;
-  } else {
-    M sum(0);
-    for (auto const& c : cells(t))
-      if (t.leaf_data(c.leaf) == which) sum = sum + G::measure(c.region);
-    return sum;
-  }
+  constexpr bool partial = partial_measure<M>;
+  typename detail::sum_of<M, partial>::type sum(0);
+  auto holds = detail::subtrees_holding(t, which);
+  [[maybe_unused]] bool bounded = true;
+  detail::visit_cells(
+      t, [&](node_id n) { return t.is_leaf(n) ? t.leaf_data(n) == which : holds[n.index()] != 0; },
+      [&](typename G::polytope const& c, node_id) {
+        if constexpr (partial) {
+          auto m = G::measure(c);
+          if (!m) return bounded = false;
+          sum = sum + *m;
+        } else {
+          sum = sum + G::measure(c);
+        }
+        return true;
+      });
+  if constexpr (partial)
+    if (!bounded) return std::nullopt;
+  return sum;
 }
 
 /// A piece of the boundary between differently labelled cells: it lies in a

@@ -263,3 +263,31 @@ TEST_CASE("E3 point sets: the laws on boxes, exactly", "[bsp][e3]") {
   CHECK(laws::size<K>(bsp::set_intersection(cube(0, 0, 0, 2), cube(2, 0, 0, 2))) == 0);
   CHECK(compared > 5000);
 }
+
+TEST_CASE("E3 point sets from boxes meeting face to face: every splitting order gives the exact volume", "[bsp][e3]") {
+  // Two boxes in one boundary, the second against the first's x = 2 face,
+  // sharing part of it (their faces lie in one plane, opposite ways round):
+  // both sides of that plane are inside, whichever face cuts there first.
+  using K = e3::exact_kernel;
+  int compared = 0;
+  // The second box's y0, z0 and sizes: two that once lost volume (orders 6 and 1), then random ones.
+  std::vector<std::array<long, 5>> second{{0, 1, 1, 2, 1}, {1, -1, 2, 1, 3}};
+  for (int t = 0; t < 12; ++t)
+    second.push_back({test::uniform(-1, 1), test::uniform(-1, 1), test::uniform(1, 3), test::uniform(1, 3), test::uniform(1, 3)});
+  for (auto [y0, z0, w, h, d] : second) {
+    std::vector<box_shape> boxes{{{Q(0), Q(0), Q(0)}, {Q(2), Q(2), Q(2)}}};
+    boxes.push_back({{Q(2), Q(y0), Q(z0)}, {Q(2 + w), Q(y0 + h), Q(z0 + d)}});
+    for (std::uint64_t seed = 0; seed < 12; ++seed) {
+      auto a = bsp::build_point_set<K>(boundary_of(boxes), true, false, bsp::random_order(seed));
+      CHECK(laws::size<K>(a) == volume_of(boxes));
+      for (int k = 0; k < 30; ++k) {
+        P3 p(Q(test::uniform(-5, 55), 10), Q(test::uniform(-15, 45), 10), Q(test::uniform(-15, 45), 10));
+        int truth = in_boxes(boxes, p);
+        if (truth == 0) continue;
+        CHECK(bsp::classify(a, p) == std::optional<bool>(truth > 0));
+        ++compared;
+      }
+    }
+  }
+  CHECK(compared > 2000);
+}
