@@ -143,8 +143,12 @@ inline void check_closed(geometry::io::scene const& s) {
   // Each vertex's representative: the first vertex with the same coordinates.
   std::vector<std::uint32_t> order(nv), rep(nv);
   for (std::uint32_t i = 0; i < nv; ++i) order[i] = i;
-  std::stable_sort(order.begin(), order.end(),
-                   [&](std::uint32_t a, std::uint32_t b) { return coords(s.vertices[a]) < coords(s.vertices[b]); });
+  std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+    auto const &p = s.vertices[a], &q = s.vertices[b]; // lexicographic, without copying the numbers
+    for (std::size_t k = 0; k < 3; ++k)
+      if (p[k] != q[k]) return p[k] < q[k];
+    return false;
+  });
   for (std::size_t i = 0; i < nv; ++i)
     rep[order[i]] = (i > 0 && s.vertices[order[i]] == s.vertices[order[i - 1]]) ? rep[order[i - 1]] : order[i];
 
@@ -571,6 +575,14 @@ inline std::vector<std::array<std::uint32_t, 3>> ear_clip(std::vector<point2> co
 
 } // namespace detail::polyhedra
 
+/// The point-set tree (`true` inside) of a solid bounded by `pieces`, each
+/// with the solid on its negative side: built as `from_scene` builds it, in
+/// one pass (Thibault and Naylor), its cuts chosen by `bsp::balanced` among
+/// the pieces' planes and axis-parallel planes through the median vertex.
+inline solid_tree solid_tree_of(std::vector<geometry::e3::sub_hyperplane<rational>> pieces) {
+  return bsp::build_point_set<space_kernel>(std::move(pieces), true, false, bsp::balanced(geometry::e3::axis_median_cut<rational>{}));
+}
+
 /// The solid bounded by a closed polygon mesh, checked on the way.
 ///
 /// 1. Vertices with exactly equal coordinates are taken as one; every edge
@@ -613,7 +625,7 @@ inline solid from_scene(geometry::io::scene const& s) {
   }
   rational enclosed = abs(six) / 6;
   out.boundary = pieces;
-  out.tree = bsp::build_point_set<space_kernel>(std::move(pieces), true, false, bsp::balanced(geometry::e3::axis_median_cut<rational>{}));
+  out.tree = solid_tree_of(std::move(pieces));
   auto v = bsp::measure(out.tree, true);
   if (!v || *v != enclosed)
     throw std::invalid_argument(geometry::io::detail::cat("self-intersecting mesh (the faces' enclosed volume ",

@@ -188,8 +188,29 @@ template <number FT> std::optional<FT> projected_area(sub_hyperplane<FT> const& 
 /// The whole space.
 template <number FT> polytope<FT> whole_space() { return {}; }
 
+/// −1 or +1 when every vertex of the polygon `f` (three bounds or more)
+/// lies strictly on that side of `h`, as `split` would see them; 0 otherwise
+/// (it touches or crosses `h`, or has fewer bounds).  Constructs nothing.
+template <number FT> int strict_side(sub_hyperplane<FT> const& f, hyperplane<FT> const& h) {
+  std::size_t n = f.bounds.size();
+  if (n < 3) return 0;
+  int side = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    sign s = restricted_det_sign(f.support.n, f.axis, h.n, f.bounds[i].line(), f.bounds[(i + 1) % n].line());
+    int v = s == sign::positive ? 1 : s == sign::negative ? -1 : 0;
+    if (v == 0 || (side != 0 && v != side)) return 0;
+    side = v;
+  }
+  return side;
+}
+
 /// The parts of `c` on either side of `h`.  The new face of both parts is `h`
-/// within `c`: the plane `h` cut by the planes of `c`'s faces.
+/// within `c`: the plane `h` cut by the planes of `c`'s faces.  A face whose
+/// every vertex lies strictly on one side of `h` (found without constructing
+/// anything) goes to that side whole, and its plane, which cannot meet `h`
+/// within `c`, is left out of the new face's cuts; only the faces that touch
+/// or cross `h` are cut.  When every face lies strictly on one side, `h`
+/// misses `c`, which goes to that side.
 template <number FT> split_result<polytope<FT>> split(polytope<FT> const& c, hyperplane<FT> const& h) {
   split_result<polytope<FT>> out;
   for (auto const& f : c.faces) {
@@ -198,13 +219,28 @@ template <number FT> split_result<polytope<FT>> split(polytope<FT> const& c, hyp
     (par == sign::positive ? out.positive : out.negative) = c;
     return out;
   }
-  std::optional<sub_hyperplane<FT>> section = whole_plane(h);
-  for (auto const& f : c.faces) {
-    section = split(*section, f.support).positive;
-    if (!section) break;
+  std::vector<int> side(c.faces.size());
+  int low = 1, high = -1; // the least and greatest face sides
+  for (std::size_t i = 0; i < c.faces.size(); ++i) {
+    side[i] = strict_side(c.faces[i], h);
+    low = std::min(low, side[i]), high = std::max(high, side[i]);
   }
+  if (!c.faces.empty() && low == high && low != 0) {
+    // Every face wholly on one side, strictly: h misses the polyhedron.
+    (low < 0 ? out.negative : out.positive) = c;
+    return out;
+  }
+  if (!c.faces.empty() && low != 0 && high != 0) std::fill(side.begin(), side.end(), 0); // cannot happen; cut by every face
+  std::optional<sub_hyperplane<FT>> section = whole_plane(h);
+  for (std::size_t i = 0; i < c.faces.size() && section; ++i)
+    if (side[i] == 0) section = split(*section, c.faces[i].support).positive;
   polytope<FT> neg, pos;
-  for (auto const& f : c.faces) {
+  for (std::size_t i = 0; i < c.faces.size(); ++i) {
+    auto const& f = c.faces[i];
+    if (side[i] != 0) {
+      (side[i] < 0 ? neg : pos).faces.push_back(f);
+      continue;
+    }
     auto r = split(f, h);
     if (r.negative) neg.faces.push_back(std::move(*r.negative));
     if (r.positive) pos.faces.push_back(std::move(*r.positive));
