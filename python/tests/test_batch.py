@@ -128,3 +128,17 @@ def test_batch_progress_on_a_terminal_is_what_was_asked(scenes, progress):
         os.close(leader)
     assert r.returncode == 0, text
     assert ("genbsp: batch 1/1 jobs" in text) == progress, text
+
+
+def test_max_memory_is_the_programs_alone(tmp_path):
+    """The interpreter owns the process: a command given --max-memory (before
+    or after the subcommand) is refused, and writes nothing."""
+    out = tmp_path / "x.off"
+    for args in (["--max-memory", "1G", "scene", "random", "--n", "2", "-o", str(out)],
+                 ["scene", "random", "--n", "2", "-o", str(out), "--max-memory", "1G"]):
+        with pytest.raises(ValueError, match=r"^--max-memory: only for the genbsp program.*resource\.setrlimit"):
+            genbsp._genbsp.run(args, None)
+        assert not out.exists()
+    # Without it, the same command runs.
+    genbsp._genbsp.run(["scene", "random", "--n", "2", "-o", str(out)], None)
+    assert out.exists()

@@ -905,6 +905,24 @@ else
   check "--max-memory: no picture" test ! -e "$work/oom.svg"
   expect_error "GENBSP_MAX_MEMORY" 'out of memory \(--max-memory 64M\)' env GENBSP_MAX_MEMORY=64M "$genbsp" csg "$work/sphere60.off" "$work/sphere60.off" --op union -o "$work/oom.off"
   check "GENBSP_MAX_MEMORY: no mesh" test ! -e "$work/oom.off"
+  # In a batch the job that runs out fails alone, its files gone, and the next one runs (on one
+  # thread when the limit leaves no room for more).
+  cat >"$work/oom-jobs.json" <<'JSON'
+{"scene": "sphere60.off",
+ "jobs": [{"eye": [0.1, 0.2, 0.3], "map": "oom-b0.json"},
+          {"eye": [0, 0, 300000], "render": {"output": "oom-b1.svg", "size": [16, 16], "fov": 1, "dir": [0, 0, 1]}}]}
+JSON
+  "$genbsp" --max-memory 64M batch "$work/oom-jobs.json" >"$work/oom-batch.out" 2>"$work/oom-batch.err"
+  check "--max-memory batch: status 2 (a job ran out)" test $? -eq 2
+  check "--max-memory batch: the job that ran out says so, the other one is written" python3 - "$work/oom-batch.out" <<'PY'
+import json, sys
+lines = [json.loads(l) for l in open(sys.argv[1])]
+assert lines[0] == {**lines[0], "job": 0, "ok": False, "error": "out of memory (--max-memory 64M)", "status": 2}, lines[0]
+assert lines[1]["job"] == 1 and lines[1]["ok"], lines[1]
+assert lines[2]["summary"]["failed"] == 1, lines[2]
+PY
+  check "--max-memory batch: no map from the job that ran out" test ! -e "$work/oom-b0.json"
+  check "--max-memory batch: the other job's picture" test -s "$work/oom-b1.svg"
   "$genbsp" --max-memory 1G map "$work/sphere60.off" --eye 0.1,0.2,0.3 -o "$work/fits.json" >/dev/null
   check "--max-memory: a run within the limit writes its map" test -s "$work/fits.json"
 fi

@@ -17,6 +17,7 @@
 #include <mutex>
 #include <set>
 #include <sstream>
+#include <system_error>
 #include <thread>
 
 namespace genbsp_tool {
@@ -290,7 +291,7 @@ json run_batch(batch_plan const& plan, std::shared_ptr<scene_data const> const& 
       } catch (geometry::io::read_error const& e) {
         status = 2, error = e.what();
       } catch (std::bad_alloc const&) {
-        status = 2, error = "out of memory" + (memory_limit_text().empty() ? std::string() : " (--max-memory " + memory_limit_text() + ")");
+        status = 2, error = out_of_memory_text();
       } catch (std::exception const& e) {
         status = 1, error = std::string("internal error: ") + e.what();
       }
@@ -322,7 +323,14 @@ json run_batch(batch_plan const& plan, std::shared_ptr<scene_data const> const& 
   };
   {
     std::vector<std::jthread> pool;
-    for (unsigned w = 1; w < workers; ++w) pool.emplace_back(work);
+    for (unsigned w = 1; w < workers; ++w) {
+      try {
+        pool.emplace_back(work);
+      } catch (std::system_error const&) {
+        break; // no room for another thread (a memory limit, say): the ones started do the work
+      }
+    }
+    workers = static_cast<unsigned>(pool.size()) + 1;
     work();
   }
   json shard = settings.shards > 1 ? json(std::to_string(settings.shard) + "/" + std::to_string(settings.shards)) : json(nullptr);

@@ -245,21 +245,6 @@ svm::visibility_map<rational> orthographic_map(map_job const& job, svm::view_fro
   return svm::build<rational>(pieces, view.eye(), o);
 }
 
-/// The scene's bounding box, exactly: its lowest and highest coordinates,
-/// and whether it has a vertex at all.
-std::tuple<std::array<rational, 3>, std::array<rational, 3>, bool> exact_box(loaded const& l) {
-  std::array<rational, 3> lo{}, hi{};
-  bool any = false;
-  for (auto const& p : l.prepared.polygons)
-    for (auto const& q : p.vertices) {
-      for (int k = 0; k < 3; ++k) {
-        if (!any || q[k] < lo[k]) lo[k] = q[k];
-        if (!any || q[k] > hi[k]) hi[k] = q[k];
-      }
-      any = true;
-    }
-  return {lo, hi, any};
-}
 
 /// The parallel view along `dir_text` (exact), about the centre of the
 /// scene's bounding box, keeping `also` on the scene's side.
@@ -267,7 +252,7 @@ svm::view_from_infinity<rational> parallel_view(loaded const& l, std::vector<svm
                                                 std::vector<geometry::e3::point<rational>> const& also) {
   auto d = parse_point(dir_text, "--view-dir");
   if (d.x() == 0 && d.y() == 0 && d.z() == 0) throw usage_error("--view-dir: the zero vector is no direction");
-  auto [lo, hi, any] = exact_box(l);
+  auto [lo, hi, any] = exact_box(l.prepared);
   if (!any) throw usage_error("--view-dir: the scene has no faces");
   geometry::e3::point<rational> centre((lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2);
   return svm::view_from_infinity<rational>(polys, {-d.x(), -d.y(), -d.z()}, centre, also);
@@ -447,10 +432,7 @@ std::string off_text(svm::scenes::scene const& s) {
 }
 
 /// "X,Y,Z" as doubles (directions and points of the camera).
-svm::vec3 parse_vec(std::string const& text, std::string const& option) {
-  auto p = parse_point(text, option);
-  return {p.x().convert_to<double>(), p.y().convert_to<double>(), p.z().convert_to<double>()};
-}
+svm::vec3 parse_vec(std::string const& text, std::string const& option) { return vec_of(parse_point(text, option)); }
 
 /// The lights of `--light X,Y,Z` (points) and then `--sun DX,DY,DZ`
 /// (directions towards lights at infinity), at most `svm::max_lights`.
@@ -476,7 +458,7 @@ std::vector<svm::render::face_info> genbsp_tool::face_infos(scene_data const& d)
     seen[p.face] = 1;
     auto& fi = out[p.face];
     std::vector<svm::vec3> v;
-    for (auto const& q : p.vertices) v.push_back({q.x().convert_to<double>(), q.y().convert_to<double>(), q.z().convert_to<double>()});
+    for (auto const& q : p.vertices) v.push_back(vec_of(q));
     using namespace svm::detail;
     svm::vec3 n{0, 0, 0}, c{0, 0, 0};
     for (std::size_t i = 0; i < v.size(); ++i) n = add3(n, cross3(v[i], v[(i + 1) % v.size()])), c = add3(c, v[i]);
@@ -486,6 +468,46 @@ std::vector<svm::render::face_info> genbsp_tool::face_infos(scene_data const& d)
     if (auto const& colour = d.scene.faces[p.face].colour) fi.colour = svm::render::rgb{colour->r, colour->g, colour->b};
   }
   return out;
+}
+
+std::tuple<std::array<rational, 3>, std::array<rational, 3>, bool> genbsp_tool::exact_box(geometry::io::prepared const& scene) {
+  std::array<rational, 3> lo{}, hi{};
+  bool any = false;
+  for (auto const& p : scene.polygons)
+    for (auto const& q : p.vertices) {
+      for (int k = 0; k < 3; ++k) {
+        if (!any || q[k] < lo[k]) lo[k] = q[k];
+        if (!any || q[k] > hi[k]) hi[k] = q[k];
+      }
+      any = true;
+    }
+  return {lo, hi, any};
+}
+
+svm::vec3 genbsp_tool::vec_of(geometry::e3::point<rational> const& p) {
+  return {p.x().convert_to<double>(), p.y().convert_to<double>(), p.z().convert_to<double>()};
+}
+
+svm::camera genbsp_tool::parallel_fit(svm::view_from_infinity<rational> const& view, std::array<rational, 3> const& lo,
+                                      std::array<rational, 3> const& hi, svm::vec3 const& up, int width, int height) {
+  svm::camera cam;
+  auto const& d = view.direction();
+  cam.forward = {-d[0].convert_to<double>(), -d[1].convert_to<double>(), -d[2].convert_to<double>()};
+  cam.up = up;
+  cam.width = width, cam.height = height;
+  svm::projector base(cam, svm::projection::perspective);
+  svm::vec3 c = vec_of(view.centre());
+  // The box's corners, seen along the view, with a margin.
+  double half_w = 0, half_h = 0;
+  for (int corner = 0; corner < 8; ++corner) {
+    svm::vec3 p{(corner & 1 ? hi : lo)[0].convert_to<double>(), (corner & 2 ? hi : lo)[1].convert_to<double>(),
+                (corner & 4 ? hi : lo)[2].convert_to<double>()};
+    auto v = svm::detail::sub3(p, c);
+    half_w = std::max(half_w, std::abs(svm::detail::dot3(v, base.right())));
+    half_h = std::max(half_h, std::abs(svm::detail::dot3(v, base.up())));
+  }
+  double extent = 2.1 * std::max({half_w, half_h * width / height, 1e-300});
+  return svm::parallel_camera(view, up, extent, width, height);
 }
 
 namespace {
@@ -1051,7 +1073,7 @@ int run(int argc, char** argv) {
     if (ortho && rj.number != "exact") throw usage_error("--projection orthographic: exact arithmetic only, for now");
     auto l = load(rj);
     auto infos = face_infos(*l.data);
-    auto [lo_q, hi_q, any] = exact_box(l);
+    auto [lo_q, hi_q, any] = exact_box(l.prepared);
     if (ortho && !any) throw usage_error(rj.scene_path + ": an orthographic view needs a scene with faces");
     std::optional<svm::view_from_infinity<rational>> parallel;
     std::vector<svm::polygon<rational>> image_polygons;
@@ -1080,7 +1102,7 @@ int run(int argc, char** argv) {
       dir_text = exact_text(d[0]) + "," + exact_text(d[1]) + "," + exact_text(d[2]);
       look_text.clear();
       // A far point towards the eye at infinity, for shading only.
-      svm::vec3 c{centre.x().convert_to<double>(), centre.y().convert_to<double>(), centre.z().convert_to<double>()};
+      svm::vec3 c = vec_of(centre);
       svm::vec3 back = svm::detail::unit3({-d[0].convert_to<double>(), -d[1].convert_to<double>(), -d[2].convert_to<double>()});
       double size = 0;
       for (int k = 0; k < 3; ++k) size = std::max(size, (hi_q[k] - lo_q[k]).convert_to<double>());
@@ -1096,7 +1118,7 @@ int run(int argc, char** argv) {
         svm::vec3 lo{HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
         for (auto const& p : l.prepared.polygons)
           for (auto const& q : p.vertices) {
-            svm::vec3 v{q.x().convert_to<double>(), q.y().convert_to<double>(), q.z().convert_to<double>()};
+            svm::vec3 v = vec_of(q);
             for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], v[k]), hi[k] = std::max(hi[k], v[k]);
           }
         if (lo[0] <= hi[0]) target = {(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2};
@@ -1116,26 +1138,13 @@ int run(int argc, char** argv) {
     cam.height = h;
     cam.hfov = fov > 0 ? fov : (equirect ? 360 : cube ? 90 : 60);
     if (ortho) {
-      svm::projector base(cam, svm::projection::perspective);
-      auto const& c = parallel->centre();
-      svm::vec3 cd{c.x().convert_to<double>(), c.y().convert_to<double>(), c.z().convert_to<double>()};
-      double extent = 0;
       if (!extent_text.empty()) {
-        extent = parse_point(extent_text + ",0,0", "--extent").x().convert_to<double>();
+        double extent = parse_point(extent_text + ",0,0", "--extent").x().convert_to<double>();
         if (!(extent > 0)) throw usage_error("--extent: the width shown must be positive");
+        cam = svm::parallel_camera(*parallel, cam.up, extent, w, h);
       } else {
-        // Fit the bounding box's corners, with a margin.
-        double half_w = 0, half_h = 0;
-        for (int corner = 0; corner < 8; ++corner) {
-          svm::vec3 p{(corner & 1 ? hi_q : lo_q)[0].convert_to<double>(), (corner & 2 ? hi_q : lo_q)[1].convert_to<double>(),
-                      (corner & 4 ? hi_q : lo_q)[2].convert_to<double>()};
-          auto v = svm::detail::sub3(p, cd);
-          half_w = std::max(half_w, std::abs(svm::detail::dot3(v, base.right())));
-          half_h = std::max(half_h, std::abs(svm::detail::dot3(v, base.up())));
-        }
-        extent = 2.1 * std::max({half_w, half_h * w / h, 1e-300});
+        cam = parallel_fit(*parallel, lo_q, hi_q, cam.up, w, h);
       }
-      cam = svm::parallel_camera(*parallel, cam.up, extent, w, h);
     }
     if (!shift_text.empty()) {
       auto sh = parse_point(shift_text + ",0", "--shift");
@@ -1296,8 +1305,7 @@ int run_main(int argc, char** argv) {
   try {
     return run(argc, argv);
   } catch (std::bad_alloc const&) {
-    std::cerr << "genbsp: out of memory" << (memory_limit_text().empty() ? "" : " (--max-memory " + memory_limit_text() + ")")
-              << "; nothing was written\n";
+    std::cerr << "genbsp: " << out_of_memory_text() << "; nothing was written\n";
     return 2;
   } catch (usage_error const& e) {
     std::cerr << "genbsp: " << e.what() << "\n";

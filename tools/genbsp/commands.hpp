@@ -81,6 +81,20 @@ svm::view_from_infinity<geometry::rational> parallel_view_of(std::shared_ptr<sce
 std::string parallel_map_json_text(svm::visibility_map<geometry::rational> const& vm, svm::view_from_infinity<geometry::rational> const& view,
                                    std::string const& up, std::shared_ptr<scene_data const> const& scene);
 
+/// The bounding box of `scene`'s polygons, exactly: their lowest and highest
+/// coordinates, and whether there is a vertex at all.
+std::tuple<std::array<geometry::rational, 3>, std::array<geometry::rational, 3>, bool> exact_box(geometry::io::prepared const& scene);
+
+/// A point's coordinates rounded to doubles, for drawing.
+svm::vec3 vec_of(geometry::e3::point<geometry::rational> const& p);
+
+/// The perspective camera at `view.eye()` that draws the parallel view,
+/// `width`×`height` pixels, up along `up`: as `genbsp render --projection
+/// orthographic` draws it without `--extent`, the box [lo, hi] (the scene's)
+/// fitted with a margin.
+svm::camera parallel_fit(svm::view_from_infinity<geometry::rational> const& view, std::array<geometry::rational, 3> const& lo,
+                         std::array<geometry::rational, 3> const& hi, svm::vec3 const& up, int width, int height);
+
 /// What a drawing knows of each input face of `scene` (its prepared
 /// polygons read): its colour from the file, and its plane.
 std::vector<svm::render::face_info> face_infos(scene_data const& scene);

@@ -64,6 +64,12 @@ inline std::string& memory_limit_text() {
   return s;
 }
 
+/// "out of memory", with the limit it ran under when there is one:
+/// "out of memory (--max-memory 1G)".
+inline std::string out_of_memory_text() {
+  return "out of memory" + (memory_limit_text().empty() ? std::string() : " (--max-memory " + memory_limit_text() + ")");
+}
+
 /// Thrown, when `parse_only()`, by a command that has checked all it can
 /// check without reading its scene.
 struct options_checked {};

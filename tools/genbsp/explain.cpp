@@ -577,6 +577,15 @@ svm::projector camera_of(std::string const& name, std::vector<svm::vec3> const& 
   return svm::projector(cam, svm::projection::perspective);
 }
 
+/// A drawing as an `<svg>` element to nest in a picture (no XML
+/// declaration), placed `top` pixels down.
+std::string nested_svg(svm::render::drawing const& d, int top = 0) {
+  std::string inner = svm::render::to_svg(d);
+  inner.erase(0, inner.find("<svg"));
+  if (top != 0) inner.insert(4, " y=\"" + std::to_string(top) + "\"");
+  return inner;
+}
+
 /// The colour of cell `k` of a picture: the palette's, a little darker.
 svm::render::rgb cell_colour(std::size_t k) {
   auto c = svm::render::palette(static_cast<std::int64_t>(k));
@@ -613,7 +622,7 @@ struct space_geometry {
       if (!v) continue;
       std::vector<svm::vec3> line;
       for (auto const& p : *v) {
-        line.push_back({geometry::to_double(p.x()), geometry::to_double(p.y()), geometry::to_double(p.z())});
+        line.push_back(vec_of(p));
         for (std::size_t k = 0; k < 3; ++k) {
           if (!framed || p[k] < lo[k]) lo[k] = p[k];
           if (!framed || p[k] > hi[k]) hi[k] = p[k];
@@ -624,9 +633,7 @@ struct space_geometry {
     }
     return faces;
   }
-  static bsp::point_set<G, bool> tree_of(std::vector<G::sub_hyperplane> const& pieces) {
-    return bsp::build_point_set<G>(pieces, true, false, bsp::balanced(geometry::e3::axis_median_cut<rational>{}));
-  }
+  static bsp::point_set<G, bool> tree_of(std::vector<G::sub_hyperplane> const& pieces) { return boolean::solid_tree_of(pieces); }
   /// The box the pictures show: the input's, with a margin.
   G::polytope clip_box() const {
     rational pad(0);
@@ -647,13 +654,10 @@ struct space_geometry {
     for (std::size_t k = 0; k < 3; ++k) size = std::max(size, hi[k] - lo[k]);
     return {(lo[0] + hi[0]) / 2 + size * rational(3, 2), (lo[1] + hi[1]) / 2 - size * 2, (lo[2] + hi[2]) / 2 + size * rational(5, 4)};
   }
-  static svm::vec3 to_vec(geometry::e3::point<rational> const& p) {
-    return {geometry::to_double(p.x()), geometry::to_double(p.y()), geometry::to_double(p.z())};
-  }
   svm::projector projector() const {
     std::vector<svm::vec3> corners;
     for (auto const& l : outlines) corners.insert(corners.end(), l.begin(), l.end());
-    return camera_of("perspective", corners, to_vec(eye()));
+    return camera_of("perspective", corners, vec_of(eye()));
   }
   std::string text(G::hyperplane const& h) const {
     return linear_text({{h.n[0], "x"}, {h.n[1], "y"}, {h.n[2], "z"}, {h.n[3], ""}}) + " (positive side where the left side is > 0)";
@@ -695,7 +699,7 @@ struct space_geometry {
         fi.colour = cell_colour(k);
         svm::vec3 n{geometry::to_double(f.support.n[0]), geometry::to_double(f.support.n[1]), geometry::to_double(f.support.n[2])};
         fi.normal = unit3(n);
-        fi.centre = to_vec(v->front());
+        fi.centre = vec_of(v->front());
         fi.offset = dot3(fi.normal, fi.centre);
         pieces.push_back({f, static_cast<std::int64_t>(infos.size())});
         infos.push_back(fi);
@@ -703,11 +707,10 @@ struct space_geometry {
     }
     inside.clear();
     svm::render::options ro;
-    ro.eye = to_vec(e);
+    ro.eye = vec_of(e);
     auto d = svm::render::draw(svm::build(pieces, e, pr.window_options()), pr, infos, ro);
     d.background.reset();
-    std::string inner = svm::render::to_svg(d);
-    o << inner.substr(inner.find("<svg"));
+    o << nested_svg(d);
     // The input's edges, hidden ones too, over the solids.
     o << "<path fill=\"none\" stroke=\"#1f4e99\" stroke-width=\"1\" stroke-opacity=\"0.7\" d=\"";
     for (auto const& l : outlines)
@@ -730,10 +733,10 @@ struct space_geometry {
     auto v = geometry::e3::vertices(*s);
     if (!v) return;
     auto pr = projector();
-    auto e = to_vec(eye());
+    auto e = vec_of(eye());
     o << "<polygon fill=\"#d62728\" fill-opacity=\"0.18\" stroke=\"#d62728\" stroke-width=\"2\" data-split=\"newest\" points=\"";
     for (auto const& p : *v) {
-      auto q = pr.project(svm::detail::unit3(svm::detail::sub3(to_vec(p), e)));
+      auto q = pr.project(svm::detail::unit3(svm::detail::sub3(vec_of(p), e)));
       o << fmt(q.x) << ',' << fmt(q.y) << ' ';
     }
     o << "\"/>\n";
@@ -1246,31 +1249,18 @@ std::vector<step> visibility2d_steps(explain_job const& job, json& trace) {
 std::vector<svm::vec3> points_of(std::vector<svm::polygon<rational>> const& polys) {
   std::vector<svm::vec3> out;
   for (auto const& p : polys)
-    for (auto const& q : p.vertices) out.push_back({geometry::to_double(q.x()), geometry::to_double(q.y()), geometry::to_double(q.z())});
+    for (auto const& q : p.vertices) out.push_back(vec_of(q));
   return out;
 }
 
 /// The camera of a parallel view's picture: looking along the view at its
-/// image, fitted to the scene's bounding box (as `genbsp render --projection
-/// orthographic` fits it), up along z (y when looking along z).
+/// image, fitted to the scene's bounding box as `genbsp render --projection
+/// orthographic` fits it, up along z (y when looking along z).
 svm::projector parallel_camera_of(svm::view_from_infinity<rational> const& view, geometry::io::prepared const& scene) {
-  using namespace svm::detail;
-  auto const& e = view.direction();
-  svm::vec3 forward{-geometry::to_double(e[0]), -geometry::to_double(e[1]), -geometry::to_double(e[2])};
-  svm::camera cam;
-  cam.forward = forward;
-  cam.up = std::abs(forward[2]) > (1 - 1e-9) * norm3(forward) ? svm::vec3{0, 1, 0} : svm::vec3{0, 0, 1};
-  cam.width = 480, cam.height = 360;
-  svm::projector base(cam, svm::projection::perspective);
-  svm::vec3 c{geometry::to_double(view.centre().x()), geometry::to_double(view.centre().y()), geometry::to_double(view.centre().z())};
-  double half_w = 0, half_h = 0;
-  for (auto const& p : scene.polygons)
-    for (auto const& q : p.vertices) {
-      auto v = sub3({geometry::to_double(q.x()), geometry::to_double(q.y()), geometry::to_double(q.z())}, c);
-      half_w = std::max(half_w, std::abs(dot3(v, base.right()))), half_h = std::max(half_h, std::abs(dot3(v, base.up())));
-    }
-  double extent = 2.3 * std::max({half_w, half_h * cam.width / cam.height, 1e-300});
-  return svm::projector(svm::parallel_camera(view, cam.up, extent, cam.width, cam.height), svm::projection::perspective);
+  auto forward = vec_of(geometry::e3::point<rational>(-view.direction()[0], -view.direction()[1], -view.direction()[2]));
+  svm::vec3 up = std::abs(forward[2]) > (1 - 1e-9) * svm::detail::norm3(forward) ? svm::vec3{0, 1, 0} : svm::vec3{0, 0, 1};
+  auto [lo, hi, any] = exact_box(scene);
+  return svm::projector(parallel_fit(view, lo, hi, up, 480, 360), svm::projection::perspective);
 }
 
 /// The spherical visibility map growing: the scene's convex polygons go into
@@ -1290,7 +1280,6 @@ std::vector<step> visibility_steps(explain_job const& job, json& trace, std::vec
   if (polys.size() > most_pieces)
     throw usage_error(job.input + ": " + std::to_string(polys.size()) + " convex polygons; explain draws at most " +
                       std::to_string(most_pieces) + " (a picture with more is not readable)");
-  auto to_vec = [](geometry::e3::point<rational> const& p) { return svm::vec3{geometry::to_double(p.x()), geometry::to_double(p.y()), geometry::to_double(p.z())}; };
   trace["geometry"] = "e3";
   // A parallel view is the central view of the scene's image from a finite
   // eye (svm::view_from_infinity): the same steps on the image.
@@ -1307,15 +1296,15 @@ std::vector<step> visibility_steps(explain_job const& job, json& trace, std::vec
     // A far point behind the viewer.
     double size = 1;
     for (auto const& p : scene)
-      for (auto const& q : p.vertices) size = std::max(size, norm3(sub3(to_vec(q), to_vec(parallel->centre()))));
-    light = add3(to_vec(parallel->centre()), mul3(unit3({-geometry::to_double(d[0]), -geometry::to_double(d[1]), -geometry::to_double(d[2])}), 1e6 * size));
+      for (auto const& q : p.vertices) size = std::max(size, norm3(sub3(vec_of(q), vec_of(parallel->centre()))));
+    light = add3(vec_of(parallel->centre()), mul3(unit3({-geometry::to_double(d[0]), -geometry::to_double(d[1]), -geometry::to_double(d[2])}), 1e6 * size));
   } else {
     auto c = parse_numbers(job.eye, 3, "--eye", "X,Y,Z");
     eye = geometry::e3::point<rational>(c[0], c[1], c[2]);
     trace["eye"] = json::array({exact_text(c[0]), exact_text(c[1]), exact_text(c[2])});
-    light = to_vec(eye);
+    light = vec_of(eye);
   }
-  svm::vec3 eye_d = to_vec(eye);
+  svm::vec3 eye_d = vec_of(eye);
   // The fragments front to back, as `svm::build` makes them.
   bsp::fragment_list<K3, std::uint32_t> input;
   std::size_t edge_on = 0;
@@ -1392,9 +1381,7 @@ std::vector<step> visibility_steps(explain_job const& job, json& trace, std::vec
     std::string caption = k == 0 ? "visibility map: no fragment yet, every direction free"
                                  : "visibility map, step " + std::to_string(k) + ": fragment " + std::to_string(k - 1) + " (of face " +
                                        std::to_string(face_of[k - 1]) + ") arrives, " + (seen ? "visible" : "hidden");
-    std::string inner = svm::render::to_svg(svm::render::draw(vm, pr, infos, ro));
-    inner.erase(0, inner.find("<svg"));
-    inner.insert(4, " y=\"" + std::to_string(top) + "\"");
+    std::string inner = nested_svg(svm::render::draw(vm, pr, infos, ro), top);
     std::ostringstream o;
     o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << w << "\" height=\"" << h + top << "\" viewBox=\"0 0 " << w << ' ' << h + top
       << "\" font-family=\"sans-serif\">\n<title>" << html_escape(caption) << "</title>\n"
