@@ -350,15 +350,7 @@ bool another_run(std::vector<double> const& runs, options const& o) {
   return n < o.repetitions || (n < o.max_repetitions && total < o.min_total);
 }
 
-void write_all(int fd, std::string const& s) {
-  std::size_t done = 0;
-  while (done < s.size()) {
-    ssize_t w = ::write(fd, s.data() + done, s.size() - done);
-    if (w < 0 && errno == EINTR) continue;
-    if (w <= 0) return;
-    done += static_cast<std::size_t>(w);
-  }
-}
+using bench::write_all;
 
 /// Lines a measuring child process sends: "run SECONDS [BUILD MERGE OUTPUT]"
 /// after each run, "result POLYGONS RINGS VERTICES AREA EXTRA" after the
@@ -445,102 +437,33 @@ void boost_child(int fd, set_op op, bmulti const& a, bmulti const& b, options co
 /// still count.
 template <class Body> measurement run_in_child(bool exact, options const& o, Body body) {
   measurement m;
-  int fds[2];
-  if (::pipe(fds) != 0) {
-    m.status = std::string("error: pipe: ") + std::strerror(errno);
-    return m;
-  }
-  std::fflush(stdout);
-  std::fflush(stderr);
-  pid_t pid = ::fork();
-  if (pid < 0) {
-    m.status = std::string("error: fork: ") + std::strerror(errno);
-    ::close(fds[0]);
-    ::close(fds[1]);
-    return m;
-  }
-  if (pid == 0) {
-    ::close(fds[0]);
-    try {
-      body(fds[1]);
-      write_all(fds[1], "done\n");
-    } catch (std::exception const& e) {
-      std::string msg = e.what();
-      std::replace(msg.begin(), msg.end(), '\n', ' ');
-      write_all(fds[1], "error " + msg + "\n");
-    }
-    ::close(fds[1]);
-    ::_exit(0);
-  }
-  ::close(fds[1]);
-  std::string buffer;
-  bool done = false, timed_out = false, got_result = false;
-  auto deadline = clock_type::now() + std::chrono::duration<double>(o.limit);
-  while (!done) {
-    double left = std::chrono::duration<double>(deadline - clock_type::now()).count();
-    if (left <= 0) {
-      timed_out = true;
-      break;
-    }
-    pollfd p{fds[0], POLLIN, 0};
-    int ready = ::poll(&p, 1, static_cast<int>(std::ceil(std::min(left, 1.0) * 1000)));
-    if (ready <= 0) continue; // time out of this poll, or a signal
-    char chunk[4096];
-    ssize_t got = ::read(fds[0], chunk, sizeof chunk);
-    if (got < 0 && errno == EINTR) continue;
-    if (got <= 0) {
-      m.status = "error: the measuring process ended without a result";
-      break;
-    }
-    buffer.append(chunk, static_cast<std::size_t>(got));
-    for (std::size_t nl; (nl = buffer.find('\n')) != std::string::npos;) {
-      std::istringstream in(buffer.substr(0, nl));
-      buffer.erase(0, nl + 1);
-      std::string kind;
-      in >> kind;
-      if (kind == "run") {
-        double total = 0, build = 0, merge = 0, output = 0;
-        in >> total >> build >> merge >> output;
-        m.runs.push_back(total);
-        if (exact) {
-          m.build.push_back(build);
-          m.merge.push_back(merge);
-          m.output.push_back(output);
-        }
-        std::fprintf(stderr, " %.3gs", total);
-      } else if (kind == "result") {
-        std::size_t extra = 0;
-        in >> m.out.polygons >> m.out.rings >> m.out.vertices >> m.out.area >> extra;
-        if (exact)
-          m.area_bits = extra;
-        else
-          m.valid = extra != 0;
-        got_result = true;
-      } else if (kind == "invalid") {
-        std::getline(in >> std::ws, m.invalid_reason);
-      } else if (kind == "trees") {
-        for (int i = 0; i < 3; ++i) in >> m.tree_nodes[i] >> m.tree_depth[i];
-      } else if (kind == "done") {
-        m.status = "ok";
-        done = true;
-      } else if (kind == "error") {
-        std::string rest;
-        std::getline(in, rest);
-        m.status = "error:" + rest;
-        done = true;
+  bool got_result = false;
+  auto end = bench::run_in_child(o.limit, body, [&](std::string const& kind, std::istringstream& in) {
+    if (kind == "run") {
+      double total = 0, build = 0, merge = 0, output = 0;
+      in >> total >> build >> merge >> output;
+      m.runs.push_back(total);
+      if (exact) {
+        m.build.push_back(build);
+        m.merge.push_back(merge);
+        m.output.push_back(output);
       }
-      deadline = clock_type::now() + std::chrono::duration<double>(o.limit);
+      std::fprintf(stderr, " %.3gs", total);
+    } else if (kind == "result") {
+      std::size_t extra = 0;
+      in >> m.out.polygons >> m.out.rings >> m.out.vertices >> m.out.area >> extra;
+      if (exact)
+        m.area_bits = extra;
+      else
+        m.valid = extra != 0;
+      got_result = true;
+    } else if (kind == "invalid") {
+      std::getline(in >> std::ws, m.invalid_reason);
+    } else if (kind == "trees") {
+      for (int i = 0; i < 3; ++i) in >> m.tree_nodes[i] >> m.tree_depth[i];
     }
-  }
-  if (timed_out) {
-    ::kill(pid, SIGKILL);
-    m.status = got_result ? "ok" : "not finished";
-  }
-  ::close(fds[0]);
-  int wstatus = 0;
-  while (::waitpid(pid, &wstatus, 0) < 0 && errno == EINTR) {
-  }
-  if (!timed_out && WIFSIGNALED(wstatus)) m.status = "error: signal " + std::to_string(WTERMSIG(wstatus));
+  });
+  m.status = end.timed_out && got_result ? "ok" : end.status;
   m.seconds = median(m.runs);
   m.build_s = median(m.build);
   m.merge_s = median(m.merge);
