@@ -106,11 +106,15 @@ struct operand {
 /// repeated vertices and zero-area rings are dropped.
 ///
 /// The input must be valid: rings simple, holes inside their outer ring,
-/// polygons with disjoint interiors; rings may touch at vertices and share
-/// edges.  Validity is checked after the build, exactly: the area enclosed by
-/// the rings must equal the area of the region the tree bounds, which fails
-/// for crossing rings, overlapping polygons and holes outside their outer
-/// ring.  Throws `invalid_polygon` then (read such input with a fill rule).
+/// polygons with disjoint interiors; rings may touch at vertices, and
+/// polygons may share edges.  A hole that shares part of an edge with its
+/// outer ring or another hole (the region on neither side there) is not
+/// handled yet: it is refused as invalid.  Validity is checked after the
+/// build, exactly: the area enclosed by the rings must equal the area of the
+/// region the tree bounds, which fails for crossing rings, overlapping
+/// polygons, holes outside their outer ring and holes sharing part of an
+/// edge with it.  Throws `invalid_polygon` then (read such input with a fill
+/// rule).
 /// Returns the tree with the edges it was built from.
 inline operand operand_of(multipolygon const& m) {
   std::vector<plane_kernel::sub_hyperplane> edges;
@@ -141,7 +145,7 @@ inline operand operand_of(multipolygon const& m) {
   auto measured = bsp::measure(t, true);
   if (!measured || *measured * 2 != enclosed)
     throw invalid_polygon("the polygons are not valid: rings cross or overlap, or a hole lies outside its outer "
-                          "ring (read them as paths with a fill rule instead)");
+                          "ring or shares part of an edge with it (read them as paths with a fill rule instead)");
   return {std::move(t), std::move(edges)};
 }
 

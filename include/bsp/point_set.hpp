@@ -26,7 +26,11 @@ template <geometry G, label L = bool> using point_set = tree<G, none, L>;
 /// The boundary must be closed and consistently oriented; pieces may touch and
 /// share vertices, edges and faces.  Where two parts of the region meet back
 /// to back (pieces lying in one hyperplane, opposite ways round, as where two
-/// polygons share part of an edge), both sides are inside.  A `bsp::cutting_policy` that offers free
+/// polygons share part of an edge), both sides are inside.  The same pieces
+/// also arise where the region lies on neither side (a hole sharing part of
+/// an edge with its outer ring, a cavity part of a face with the outer
+/// shell); that case is not told apart yet, and the side in front of such a
+/// cut is labelled inside.  A `bsp::cutting_policy` that offers free
 /// cuts, as `balanced` does, keeps the tree shallow on convex surfaces.
 template <geometry G, label L = bool, splitting_policy<G> Policy = input_order>
 point_set<G, L> build_point_set(std::vector<typename G::sub_hyperplane> boundary, L inside = L(true),
