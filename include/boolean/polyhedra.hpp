@@ -602,7 +602,9 @@ inline solid_tree solid_tree_of(std::vector<geometry::e3::sub_hyperplane<rationa
 /// 4. The exact volume of the tree's inside cells must equal the signed
 ///    enclosed volume; they differ when faces pass through one another:
 ///    `std::invalid_argument` "self-intersecting mesh (the faces' enclosed
-///    volume X differs from the volume of the solid they bound Y)".
+///    volume X differs from the volume of the solid they bound Y), or a
+///    cavity shares part of a face with the outer shell" (the second case
+///    is not told apart from two solids meeting face to face yet).
 ///
 /// `std::out_of_range` for a face that refers to a missing vertex (only a
 /// scene built by hand can have one).
@@ -631,7 +633,8 @@ inline solid from_scene(geometry::io::scene const& s) {
     throw std::invalid_argument(geometry::io::detail::cat("self-intersecting mesh (the faces' enclosed volume ",
                                                           d::text(enclosed),
                                                           " differs from the volume of the solid they bound",
-                                                          v ? " " : ", which is unbounded", v ? d::text(*v) : "", ")"));
+                                                          v ? " " : ", which is unbounded", v ? d::text(*v) : "",
+                                                          "), or a cavity shares part of a face with the outer shell"));
   out.volume = std::move(*v);
   return out;
 }
