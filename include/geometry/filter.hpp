@@ -769,14 +769,14 @@ constexpr static_constants<sizeof...(N)> static_constants_of(std::index_sequence
 template <class F, std::size_t... N> stage_result static_stage(F const& f, approximation<N> const&... a) {
   static constexpr auto k = static_constants_of<F, N...>(std::make_index_sequence<sizeof...(N)>{});
   constexpr double u = std::numeric_limits<double>::epsilon() / 2;
+  static constexpr double scale = 2.0 * k.depth * u * k.weight;
   double const v = f(a.v...);
-  double m = k.weight;
+  double bound = scale;
   std::size_t i = 0;
-  auto times_power = [&m](double n, int d) {
-    for (int j = 0; j < d; ++j) m *= n;
+  auto times_power = [&bound](double n, int d) {
+    for (int j = 0; j < d; ++j) bound *= n;
   };
   (times_power(a.norm, k.degree[i++]), ...);
-  double bound = (2.0 * k.depth * u) * m;
   if (v > bound) return {true, sign::positive, {}};
   if (v < -bound) return {true, sign::negative, {}};
   return {false, sign::zero, {}};
@@ -825,6 +825,22 @@ template <class F, std::size_t... N>
   return integer_sign(f, exact(v.exact())...);
 }
 
+/// The filter's stages after the static one, over an exact field: the
+/// semi-static stage, then the exact ladder (or the exact ladder alone when
+/// the filter is off).
+template <class F, number FT, std::size_t... N> sign semi_static_then_exact(F const& f, hvec<FT, N> const&... v) {
+  if (filter_config().enabled) [[likely]] {
+    auto q = semi_static(f, to_sfloat(v.approx())...);
+    return q.certain ? q.s : filtered_slow(f, q.r, v...);
+  }
+  return filtered_slow(f, sfloat{0.0, std::numeric_limits<double>::quiet_NaN()}, v...);
+}
+/// The same, out of line, where the static stage came first and failed.
+template <class F, number FT, std::size_t... N>
+[[gnu::noinline]] sign after_static_stage(F const& f, hvec<FT, N> const&... v) {
+  return semi_static_then_exact(f, v...);
+}
+
 } // namespace detail
 
 /// The sign of `f(v...)`, where `f` is a lambda computing a polynomial,
@@ -848,15 +864,17 @@ sign filtered_sign(F&& f, hvec<FT, N> const&... v) {
     return q.certain ? q.s : detail::double_slow(f, q.r, v...);
   } else {
     if (filter_config().count_evaluations) ++filter_stats().evaluations;
-    if (filter_config().enabled) [[likely]] {
-      if constexpr (std::is_empty_v<std::remove_cvref_t<F>> && std::is_default_constructible_v<std::remove_cvref_t<F>>) {
+    if constexpr (std::is_empty_v<std::remove_cvref_t<F>> && std::is_default_constructible_v<std::remove_cvref_t<F>>) {
+      // The static stage inline, everything after it out of line: the
+      // common case is a few multiplications and a comparison at the caller.
+      if (filter_config().enabled) [[likely]] {
         auto p = detail::static_stage(f, v.approx()...);
         if (p.certain) return p.s;
       }
-      auto q = detail::semi_static(f, detail::to_sfloat(v.approx())...);
-      return q.certain ? q.s : detail::filtered_slow(f, q.r, v...);
+      return detail::after_static_stage(f, v...);
+    } else {
+      return detail::semi_static_then_exact(f, v...);
     }
-    return detail::filtered_slow(f, detail::sfloat{0.0, std::numeric_limits<double>::quiet_NaN()}, v...);
   }
 }
 
