@@ -7,6 +7,8 @@
 
 #include <cstdint>
 #include <optional>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace geometry {
@@ -82,20 +84,52 @@ std::vector<restricted_bound<Hyperplane, FT, M>> mirrored(std::vector<restricted
   return out;
 }
 
+namespace detail {
+/// Calls `f(std::integral_constant<std::size_t, k>{}, std::bool_constant<flip>{})`
+/// for `k < N`: the restricted predicates below are written once per
+/// eliminated coordinate and orientation, so that their polynomials have
+/// no captures and get the filter's static stage.
+template <std::size_t N, class F> decltype(auto) with_restriction(std::size_t k, bool flip, F&& f) {
+  return [&]<std::size_t... K>(std::index_sequence<K...>) -> decltype(auto) {
+    using R = decltype(f(std::integral_constant<std::size_t, 0>{}, std::false_type{}));
+    R r{};
+    ((k == K ? (r = flip ? f(std::integral_constant<std::size_t, K>{}, std::true_type{})
+                         : f(std::integral_constant<std::size_t, K>{}, std::false_type{}),
+                true)
+             : false) ||
+     ...);
+    return r;
+  }(std::make_index_sequence<N>{});
+}
+
+/// The coordinates other than `K` of an `N`-coordinate vector, in order.
+template <std::size_t N, std::size_t K> constexpr std::array<std::size_t, N - 1> kept_coordinates() {
+  std::array<std::size_t, N - 1> idx{};
+  for (std::size_t i = 0, j = 0; i < N; ++i)
+    if (i != K) idx[j++] = i;
+  return idx;
+}
+} // namespace detail
+
 /// Sign of `det(restrict_to(p, k, h), b)` for a 2-coordinate bound `b` on
 /// the 3-coordinate hyperplane `p`, without constructing the restriction: the
 /// same filtered predicate, so asking it allocates nothing in the common case.
 template <number FT>
 sign restricted_det_sign(hvec<FT, 3> const& p, std::size_t k, hvec<FT, 3> const& h, hvec<FT, 2> const& b) {
-  std::size_t i0 = k == 0 ? 1 : 0, i1 = k == 2 ? 1 : 2;
-  bool flip = detail::restriction_flips(p, k);
-  sign s = filtered_sign(
-      [k, i0, i1, flip](auto const& P, auto const& H, auto const& B) {
-        auto v0 = P[k] * H[i0] - H[k] * P[i0];
-        auto v1 = P[k] * H[i1] - H[k] * P[i1];
-        return flip ? -(v0 * B[1]) - v1 * B[0] : v0 * B[1] - v1 * B[0];
-      },
-      p, h, b);
+  sign s = detail::with_restriction<3>(k, detail::restriction_flips(p, k), [&](auto kc, auto fc) {
+    return filtered_sign(
+        [](auto const& P, auto const& H, auto const& B) {
+          constexpr std::size_t K = decltype(kc)::value;
+          constexpr auto idx = detail::kept_coordinates<3, K>();
+          auto v0 = P[K] * H[idx[0]] - H[K] * P[idx[0]];
+          auto v1 = P[K] * H[idx[1]] - H[K] * P[idx[1]];
+          if constexpr (decltype(fc)::value)
+            return -(v0 * B[1]) - v1 * B[0];
+          else
+            return v0 * B[1] - v1 * B[0];
+        },
+        p, h, b);
+  });
   return p.sign_at(k) == sign::negative ? -s : s;
 }
 
@@ -106,21 +140,24 @@ sign restricted_det_sign(hvec<FT, 3> const& p, std::size_t k, hvec<FT, 3> const&
 template <number FT>
 sign restricted_det_sign(hvec<FT, 4> const& p, std::size_t k, hvec<FT, 4> const& h, hvec<FT, 3> const& a,
                          hvec<FT, 3> const& b) {
-  std::array<std::size_t, 3> idx{};
-  for (std::size_t i = 0, j = 0; i < 4; ++i)
-    if (i != k) idx[j++] = i;
-  bool flip = detail::restriction_flips(p, k);
-  sign s = filtered_sign(
-      [k, idx, flip](auto const& P, auto const& H, auto const& A, auto const& B) {
-        auto r0 = P[k] * H[idx[0]] - H[k] * P[idx[0]];
-        auto r1 = P[k] * H[idx[1]] - H[k] * P[idx[1]];
-        auto r2 = P[k] * H[idx[2]] - H[k] * P[idx[2]];
-        auto c0 = A[1] * B[2] - A[2] * B[1];
-        auto c1 = A[2] * B[0] - A[0] * B[2];
-        auto c2 = A[0] * B[1] - A[1] * B[0];
-        return flip ? c1 * r1 + c2 * r2 - c0 * r0 : c0 * r0 + c1 * r1 + c2 * r2;
-      },
-      p, h, a, b);
+  sign s = detail::with_restriction<4>(k, detail::restriction_flips(p, k), [&](auto kc, auto fc) {
+    return filtered_sign(
+        [](auto const& P, auto const& H, auto const& A, auto const& B) {
+          constexpr std::size_t K = decltype(kc)::value;
+          constexpr auto idx = detail::kept_coordinates<4, K>();
+          auto r0 = P[K] * H[idx[0]] - H[K] * P[idx[0]];
+          auto r1 = P[K] * H[idx[1]] - H[K] * P[idx[1]];
+          auto r2 = P[K] * H[idx[2]] - H[K] * P[idx[2]];
+          auto c0 = A[1] * B[2] - A[2] * B[1];
+          auto c1 = A[2] * B[0] - A[0] * B[2];
+          auto c2 = A[0] * B[1] - A[1] * B[0];
+          if constexpr (decltype(fc)::value)
+            return c1 * r1 + c2 * r2 - c0 * r0;
+          else
+            return c0 * r0 + c1 * r1 + c2 * r2;
+        },
+        p, h, a, b);
+  });
   return p.sign_at(k) == sign::negative ? -s : s;
 }
 
