@@ -473,20 +473,44 @@ inline void set_integer(integer& z, int128 v) {
   if (v < 0) mpz_neg(z.backend().data(), z.backend().data());
 }
 
-/// The greatest common divisor of two 128-bit numbers (binary: no division).
+/// The greatest common divisor of two 64-bit numbers, both non-zero (binary).
+inline std::uint64_t gcd64(std::uint64_t a, std::uint64_t b) noexcept {
+  int shift = __builtin_ctzll(a | b);
+  a >>= __builtin_ctzll(a);
+  do {
+    b >>= __builtin_ctzll(b);
+    if (a > b) std::swap(a, b);
+    b -= a;
+  } while (b != 0);
+  return a << shift;
+}
+
+/// The greatest common divisor of two 128-bit numbers.  Binary, on 64-bit
+/// words as soon as both fit; a number below 2^64 first reduces the other
+/// by one division, so that a small common factor is found in a few steps.
 inline uint128 gcd(uint128 a, uint128 b) noexcept {
+  if (a == 0) return b;
+  if (b == 0) return a;
+  if (a > b) std::swap(a, b);
+  if (static_cast<std::uint64_t>(a >> 64) == 0) {
+    auto a64 = static_cast<std::uint64_t>(a);
+    auto b64 = static_cast<std::uint64_t>(static_cast<std::uint64_t>(b >> 64) == 0 ? b : b % a64);
+    return b64 == 0 ? a64 : gcd64(a64, b64);
+  }
   auto ctz = [](uint128 x) {
     auto lo = static_cast<std::uint64_t>(x);
     return lo ? __builtin_ctzll(lo) : 64 + __builtin_ctzll(static_cast<std::uint64_t>(x >> 64));
   };
-  if (a == 0) return b;
-  if (b == 0) return a;
   int shift = std::min(ctz(a), ctz(b));
   a >>= ctz(a);
   while (b != 0) {
     b >>= ctz(b);
     if (a > b) std::swap(a, b);
     b -= a;
+    if (static_cast<std::uint64_t>(b >> 64) == 0 && static_cast<std::uint64_t>(a >> 64) == 0) {
+      auto b64 = static_cast<std::uint64_t>(b);
+      return (b64 == 0 ? a : uint128{gcd64(static_cast<std::uint64_t>(a), b64)}) << shift;
+    }
   }
   return a << shift;
 }
@@ -504,7 +528,8 @@ integer_vector<M> integer_construction(F const& f, integer_vector<N> const&... a
   if (bits <= int128_bits && (a.small() && ...) && filter_config().fixed_width) {
     std::array<int128, M> r = f(to_int128(a)...);
     uint128 g = 0;
-    for (auto x : r) g = gcd(g, x < 0 ? -static_cast<uint128>(x) : static_cast<uint128>(x));
+    for (auto x : r)
+      if (g != 1) g = gcd(g, x < 0 ? -static_cast<uint128>(x) : static_cast<uint128>(x));
     if (g > 1)
       for (auto& x : r) x /= static_cast<int128>(g);
     return integer_vector<M>(r);

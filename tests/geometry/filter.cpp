@@ -6,6 +6,9 @@
 #include <catch2/catch.hpp>
 #include <geometry/geometry.hpp>
 
+#include <cstdint>
+#include <random>
+
 using namespace geometry;
 using test::Q;
 
@@ -450,4 +453,40 @@ TEST_CASE("exact vectors are equal when they are the same up to a positive facto
   // A vector made from integers equals the rational one it is a multiple of.
   auto c = cross(hvec<Q, 3>(std::array<Q, 3>{Q(1), Q(0), Q(0)}), hvec<Q, 3>(std::array<Q, 3>{Q(0), Q(1, 5), Q(0)}));
   CHECK(c == hvec<Q, 3>(std::array<Q, 3>{Q(0), Q(0), Q(1, 5)}));
+}
+
+TEST_CASE("the 128-bit gcd of constructions agrees with GMP's", "[filter][construct]") {
+  using detail::uint128;
+  std::mt19937_64 rng(20261204);
+  auto to_mpz = [](uint128 v) {
+    integer z(static_cast<std::uint64_t>(v >> 64));
+    z <<= 64;
+    z += static_cast<std::uint64_t>(v);
+    return z;
+  };
+  // Random sizes from 0 to 128 bits, with common factors (odd ones and powers
+  // of two) multiplied in, so that every branch runs: both below 2^64, one
+  // below and one above (the division first), both above, zeros.
+  auto sized = [&rng](int bits) -> uint128 {
+    if (bits == 0) return 0;
+    uint128 v = (uint128{rng()} << 64) | rng();
+    return bits == 128 ? v : v & ((uint128{1} << bits) - 1);
+  };
+  int checked = 0;
+  for (int i = 0; i < 20000; ++i) {
+    int fb = static_cast<int>(rng() % 40);
+    uint128 f = sized(fb) | 1;
+    f <<= rng() % 8;
+    int fbits = 128 - (f >> 64 ? __builtin_clzll(static_cast<std::uint64_t>(f >> 64)) : 64 + __builtin_clzll(static_cast<std::uint64_t>(f)));
+    int room = 128 - fbits;
+    uint128 a = sized(static_cast<int>(rng() % (room + 1))) * f, b = sized(static_cast<int>(rng() % (room + 1))) * f;
+    integer g;
+    mpz_gcd(g.backend().data(), to_mpz(a).backend().data(), to_mpz(b).backend().data());
+    REQUIRE(to_mpz(detail::gcd(a, b)) == g);
+    REQUIRE(to_mpz(detail::gcd(b, a)) == g);
+    ++checked;
+  }
+  CHECK(detail::gcd(0, 0) == 0);
+  CHECK(detail::gcd(uint128{1} << 127, uint128{3} << 100) == (uint128{1} << 100));
+  CHECK(checked == 20000);
 }
