@@ -5,8 +5,10 @@
 /// result is turned back into a polygon mesh with as few faces as the planes
 /// allow, welded and free of T-junctions.
 ///
-/// Everything is exact: vertices, planes, volumes and every decision are
-/// rational.  Doubles appear only in the text writers and, as a conservative
+/// Everything is exact: planes and vertices are integer homogeneous vectors
+/// (the mesh's vertices are written as rationals, once each), volumes are
+/// rational, every decision is an exact sign.  Doubles appear only in the
+/// text writers, in filters that certify signs, and, as a conservative
 /// filter that never decides anything, in the search for vertices lying on
 /// edges.
 ///
@@ -35,6 +37,8 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -502,23 +506,6 @@ inline void split_edges(mesh& m) {
   }
 }
 
-/// Indices of the exactly equal points of `faces`: one vertex per point.
-inline mesh weld(std::vector<std::vector<point3>> const& faces) {
-  mesh m;
-  std::map<vec3, std::uint32_t> index;
-  for (auto const& f : faces) {
-    std::vector<std::uint32_t> g;
-    g.reserve(f.size());
-    for (auto const& p : f) {
-      auto [it, added] = index.try_emplace(coords(p), static_cast<std::uint32_t>(m.vertices.size()));
-      if (added) m.vertices.push_back(p);
-      g.push_back(it->second);
-    }
-    m.faces.push_back(std::move(g));
-  }
-  return m;
-}
-
 /// Cuts a simple polygon (counter-clockwise, distinct vertices, straight
 /// vertices allowed) into triangles by ear clipping, using every vertex and
 /// making no flat triangle: an ear is a strictly convex corner whose closed
@@ -571,6 +558,194 @@ inline std::vector<std::array<std::uint32_t, 3>> ear_clip(std::vector<point2> co
   }
   if (corner[i] != sign::zero) out.push_back({ids[prev[i]], ids[i], ids[next[i]]});
   return out;
+}
+
+// ---------------------------------------------------------------- faces on integer vertices
+
+using hvec4 = geometry::hvec<rational, 4>;
+using hvec3 = geometry::hvec<rational, 3>;
+
+/// Hash of an exact homogeneous vector, from the low 64 bits of its
+/// primitive integer coordinates (equal vectors, equal integers; `==` then
+/// compares them whole).
+struct hvec_hash {
+  template <std::size_t N> std::size_t operator()(geometry::hvec<rational, N> const& v) const {
+    auto const& z = v.integer_view();
+    std::uint64_t h = N;
+    for (std::size_t i = 0; i < N; ++i) {
+      std::uint64_t low;
+      if (z.mid()) {
+        low = static_cast<std::uint64_t>(z.z128[i]);
+      } else {
+        mpz_srcptr p = z.big()[i].backend().data();
+        std::uint64_t m = mpz_size(p) != 0 ? mpz_getlimbn(p, 0) : 0;
+        low = mpz_sgn(p) < 0 ? ~m + 1 : m;
+      }
+      h = (h ^ low) * 0x9e3779b97f4a7c15ull;
+      h ^= h >> 29;
+    }
+    return static_cast<std::size_t>(h);
+  }
+};
+
+/// A line of a face's plane, as the pieces' bounds give it: the restricted
+/// line with its first non-zero coefficient positive (equal keys, equal
+/// lines), a bounding plane through it and a direction along it.
+struct line3 {
+  hvec3 key;
+  hvec4 plane; ///< a plane meeting the face's plane in this line
+  hvec3 along; ///< a direction of the line (the cross product of the two planes' normals)
+};
+
+/// Whether `a` comes before `b` along `d`: the sign of d·a/w_a − d·b/w_b (w > 0).
+inline bool before(hvec3 const& d, hvec4 const& a, hvec4 const& b) {
+  return geometry::filtered_sign(
+             [](auto const& D, auto const& A, auto const& B) {
+               return (D[0] * A[0] + D[1] * A[1] + D[2] * A[2]) * B[3] - (D[0] * B[0] + D[1] * B[1] + D[2] * B[2]) * A[3];
+             },
+             d, a, b) == geometry::sign::negative;
+}
+
+/// The faces of one oriented plane, from its pieces' integer vertices,
+/// without constructing a coordinate: edges are grouped by line (equal
+/// restricted bounds), cancelled along each line by comparing the vertices'
+/// positions exactly, and traced into a loop.  Appends the loop's vertices
+/// to `face` and returns true when the plane's region is one polygon without
+/// holes whose boundary neither touches itself nor runs twice along an edge
+/// (the common case); returns false, having appended nothing, in every
+/// other case, which the rational path (`cancel`, `assemble`,
+/// `without_holes`) then handles.  Throws `std::invalid_argument` for an
+/// unbounded piece.
+inline bool single_face(std::vector<piece3> const& pieces, std::vector<hvec4>& face) {
+  using geometry::sign;
+  if (pieces.empty()) return false;
+  std::size_t axis = pieces.front().axis;
+  for (auto const& p : pieces)
+    if (p.axis != axis) return false;
+  auto const& support = pieces.front().support.n;
+
+  std::vector<line3> lines;
+  std::unordered_map<hvec3, std::uint32_t, hvec_hash> line_of;
+  std::vector<hvec4> vertex;
+  std::unordered_map<hvec4, std::uint32_t, hvec_hash> vertex_of;
+  auto vertex_id = [&](hvec4 const& v) {
+    auto [it, added] = vertex_of.try_emplace(v, static_cast<std::uint32_t>(vertex.size()));
+    if (added) vertex.push_back(v);
+    return it->second;
+  };
+  struct event {
+    std::uint32_t vertex;
+    int delta;
+  };
+  std::vector<std::vector<event>> events;
+  for (auto const& p : pieces) {
+    auto hv = geometry::e3::homogeneous_vertices(p);
+    if (hv.empty()) throw std::invalid_argument("boolean::to_mesh: the solid is unbounded");
+    for (auto const& x : hv)
+      if (x.sign_at(3) != sign::positive) throw std::invalid_argument("boolean::to_mesh: the solid is unbounded");
+    std::size_t k = hv.size();
+    for (std::size_t i = 0; i < k; ++i) {
+      // Vertex i − 1 ends bound i − 1 and starts bound i; the edge to vertex i runs along bound i.
+      hvec4 const &a = hv[(i + k - 1) % k], &b = hv[i];
+      if (a == b) continue;
+      auto const& bound = p.bounds[i];
+      hvec3 key = bound.line();
+      std::size_t first = 0;
+      while (first < 3 && key.sign_at(first) == sign::zero) ++first;
+      if (first == 3) return false;
+      if (key.sign_at(first) == sign::negative) key = -key;
+      auto [it, added] = line_of.try_emplace(key, static_cast<std::uint32_t>(lines.size()));
+      if (added) {
+        auto along = geometry::construct<3>(
+            [](auto const& P, auto const& B) {
+              using T = std::remove_cvref_t<decltype(P[0])>;
+              return std::array<T, 3>{T(P[1] * B[2] - P[2] * B[1]), T(P[2] * B[0] - P[0] * B[2]),
+                                      T(P[0] * B[1] - P[1] * B[0])};
+            },
+            support, bound.original.n);
+        lines.push_back({std::move(key), bound.original.n, std::move(along)});
+        events.emplace_back();
+      }
+      // +1 from `a` to `b`: positive where edges run along `along`, negative where they run against it.
+      auto& ev = events[it->second];
+      ev.push_back({vertex_id(a), 1});
+      ev.push_back({vertex_id(b), -1});
+    }
+  }
+
+  struct edge {
+    std::uint32_t from, to, line;
+  };
+  std::vector<edge> edges;
+  for (std::uint32_t l = 0; l < lines.size(); ++l) {
+    auto& ev = events[l];
+    auto const& d = lines[l].along;
+    std::sort(ev.begin(), ev.end(), [&](event const& a, event const& b) { return before(d, vertex[a.vertex], vertex[b.vertex]); });
+    int net = 0;
+    std::uint32_t start = 0;
+    for (std::size_t a = 0; a < ev.size();) {
+      std::size_t b = a;
+      int next = net;
+      while (b < ev.size() && !before(d, vertex[ev[a].vertex], vertex[ev[b].vertex])) next += ev[b++].delta;
+      if (next != net) {
+        if (std::abs(net) > 1 || std::abs(next) > 1) return false; // an edge run twice: not a manifold face
+        if (net > 0) edges.push_back({start, ev[a].vertex, l});
+        if (net < 0) edges.push_back({ev[a].vertex, start, l});
+        if (next != 0) start = ev[a].vertex;
+        net = next;
+      }
+      a = b;
+    }
+  }
+  if (edges.size() < 3) return false;
+
+  // One loop: every vertex left once and reached once, all edges in one walk.
+  constexpr std::uint32_t none = ~std::uint32_t{0};
+  std::vector<std::uint32_t> leaving(vertex.size(), none), arriving(vertex.size(), 0);
+  for (std::uint32_t e = 0; e < edges.size(); ++e) {
+    if (leaving[edges[e].from] != none) return false;
+    leaving[edges[e].from] = e;
+    ++arriving[edges[e].to];
+  }
+  std::vector<std::uint32_t> loop;
+  loop.reserve(edges.size());
+  for (std::uint32_t e = 0;;) {
+    loop.push_back(e);
+    if (arriving[edges[e].to] != 1 || leaving[edges[e].to] == none) return false;
+    e = leaving[edges[e].to];
+    if (e == 0) break;
+    if (loop.size() > edges.size()) return false;
+  }
+  if (loop.size() != edges.size()) return false; // several loops: holes or several polygons
+
+  // A vertex inside another edge would make the boundary touch itself.
+  constexpr std::size_t quadratic_limit = 512;
+  if (edges.size() > quadratic_limit) return false;
+  for (auto const& e : edges) {
+    auto const& l = lines[e.line];
+    hvec4 const &a = vertex[e.from], &b = vertex[e.to];
+    bool forward = before(l.along, a, b);
+    for (auto const& f : edges) {
+      hvec4 const& p = vertex[f.from];
+      if (f.from == e.from || f.from == e.to) continue;
+      if (geometry::dot_sign(l.plane, p) != sign::zero) continue;
+      if (forward ? before(l.along, a, p) && before(l.along, p, b) : before(l.along, b, p) && before(l.along, p, a))
+        return false;
+    }
+  }
+
+  // Joined runs make no straight vertex, but a run may be split where the sweep met a vertex of another line.
+  std::size_t n = loop.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    auto const& e = edges[loop[i]];
+    if (edges[loop[(i + n - 1) % n]].line == e.line) continue;
+    face.push_back(vertex[e.from]);
+  }
+  if (face.size() < 3) {
+    face.clear();
+    return false;
+  }
+  return true;
 }
 
 } // namespace detail::polyhedra
@@ -662,34 +837,48 @@ inline solid apply(csg_op op, solid const& a, solid const& b) {
 }
 
 
-/// A solid's boundary pieces (the solid on their negative side, as
-/// `bsp::oriented_boundary` gives them) as a polygon mesh, exact.
-///
-/// The pieces are grouped by
-/// oriented plane; in each plane their directed edges, projected to 2D,
-/// cancel where opposite edges overlap along a line, and what is left is
-/// assembled into polygons (`boolean::assemble`): the plane's faces merged as
-/// far as possible.  A polygon with holes is cut along the lines of its holes'
-/// edges into simple polygons.  Vertices are lifted back exactly, welded
-/// (equal points, one index), and every vertex lying inside a face edge is
-/// inserted into it, so no T-junction is left: for a bounded solid whose
-/// boundary is a manifold the mesh is `closed`.  Where the solid is not a
-/// manifold (two boxes sharing only an edge) the edge is used by four faces:
-/// `inspect_edges` counts it as non-manifold.  Faces may be non-convex;
-/// adjacent faces never lie in the same oriented plane unless a hole forced
-/// the cut.  Throws `std::invalid_argument` for an unbounded solid.
-inline mesh to_mesh(std::vector<geometry::e3::sub_hyperplane<rational>> boundary) {
+namespace detail::polyhedra {
+/// `to_mesh`, with the integer path for single faces (`single_face`) on or
+/// off (off: every plane on rational points, for comparison); counts the
+/// planes the integer path made into `integer_planes` when given.
+inline mesh build_mesh(std::vector<piece3> boundary, bool integer_faces, std::size_t* integer_planes = nullptr) {
   namespace d = detail::polyhedra;
-  std::map<d::plane_key, std::vector<d::piece3>> planes;
-  for (auto& p : boundary) {
-    auto key = d::canonical(p);
-    planes[std::move(key)].push_back(std::move(p));
+  // Pieces grouped by oriented plane (equal primitive integer coefficients), in order of first appearance.
+  std::vector<std::vector<d::piece3>> planes;
+  {
+    std::unordered_map<d::hvec4, std::size_t, d::hvec_hash> group;
+    for (auto& p : boundary) {
+      auto [it, added] = group.try_emplace(p.support.n, planes.size());
+      if (added) planes.emplace_back();
+      planes[it->second].push_back(std::move(p));
+    }
   }
-  std::vector<std::vector<point3>> faces;
+  // Every vertex once, by its primitive integer coordinates.
+  mesh m;
+  std::vector<d::hvec4> vertex;
+  std::unordered_map<d::hvec4, std::uint32_t, d::hvec_hash> vertex_of;
+  auto add_face = [&](std::vector<d::hvec4> const& f) {
+    std::vector<std::uint32_t> g;
+    g.reserve(f.size());
+    for (auto const& v : f) {
+      auto [it, added] = vertex_of.try_emplace(v, static_cast<std::uint32_t>(vertex.size()));
+      if (added) vertex.push_back(v);
+      g.push_back(it->second);
+    }
+    m.faces.push_back(std::move(g));
+  };
+  std::vector<d::hvec4> face;
   std::vector<directed_segment> edges;
   std::vector<ring> rings;
-  for (auto const& [key, pieces] : planes) {
-    d::frame fr(key);
+  for (auto const& pieces : planes) {
+    face.clear();
+    if (integer_faces && d::single_face(pieces, face)) {
+      add_face(face);
+      if (integer_planes) ++*integer_planes;
+      continue;
+    }
+    // The general case, on rational points in the plane's 2D frame.
+    d::frame fr(d::canonical(pieces.front()));
     edges.clear();
     for (auto const& p : pieces) {
       auto v = geometry::e3::vertices(p);
@@ -704,19 +893,52 @@ inline mesh to_mesh(std::vector<geometry::e3::sub_hyperplane<rational>> boundary
       for (std::size_t i = 0; i < q.size(); ++i) edges.push_back({q[i], q[(i + 1) % q.size()]});
     }
     rings.clear();
-    auto boundary = d::cancel(edges);
-    d::split_at_endpoints(boundary);
-    for (auto& poly : assemble(boundary)) d::without_holes(std::move(poly), rings);
+    auto boundary_edges = d::cancel(edges);
+    d::split_at_endpoints(boundary_edges);
+    for (auto& poly : assemble(boundary_edges)) d::without_holes(std::move(poly), rings);
     for (auto const& r : rings) {
-      std::vector<point3> f;
-      f.reserve(r.size());
-      for (auto const& q : r) f.push_back(fr.lift(q));
-      faces.push_back(std::move(f));
+      face.clear();
+      face.reserve(r.size());
+      for (auto const& q : r) {
+        auto x = fr.lift(q);
+        face.emplace_back(std::array<rational, 4>{x.x(), x.y(), x.z(), rational(1)});
+      }
+      add_face(face);
     }
   }
-  mesh m = d::weld(faces);
+  m.vertices.reserve(vertex.size());
+  for (auto const& v : vertex) {
+    auto const& z = v.integers(); // w > 0: one canonical fraction a coordinate
+    m.vertices.emplace_back(rational(z[0], z[3]), rational(z[1], z[3]), rational(z[2], z[3]));
+  }
   d::split_edges(m);
   return m;
+}
+} // namespace detail::polyhedra
+
+/// A solid's boundary pieces (the solid on their negative side, as
+/// `bsp::oriented_boundary` gives them) as a polygon mesh, exact.
+///
+/// The pieces are grouped by oriented plane; in each plane their directed
+/// edges cancel where opposite edges overlap along a line, and what is left
+/// is assembled into polygons: the plane's faces merged as far as possible.
+/// Where a plane's region is one polygon without holes whose boundary does
+/// not touch itself (the common case), this is done on the pieces' integer
+/// homogeneous vertices and bounding lines alone (`single_face`): no
+/// coordinate is constructed until the mesh's vertices are written, once
+/// each.  Otherwise the plane's edges are projected to 2D rational points
+/// and assembled by `boolean::assemble`, and a polygon with holes is cut
+/// along the lines of its holes' edges into simple polygons.  Vertices are
+/// welded (equal points, one index), and every vertex lying inside a face
+/// edge is inserted into it, so no T-junction is left: for a bounded solid
+/// whose boundary is a manifold the mesh is `closed`.  Where the solid is
+/// not a manifold (two boxes sharing only an edge) the edge is used by four
+/// faces: `inspect_edges` counts it as non-manifold.  Faces may be
+/// non-convex; adjacent faces never lie in the same oriented plane unless a
+/// hole forced the cut.  Throws `std::invalid_argument` for an unbounded
+/// solid.
+inline mesh to_mesh(std::vector<geometry::e3::sub_hyperplane<rational>> boundary) {
+  return detail::polyhedra::build_mesh(std::move(boundary), true);
 }
 
 /// The mesh of a solid's tree (see `to_mesh` of boundary pieces).

@@ -11,10 +11,13 @@
 #include <boolean/polyhedra.hpp>
 #include <geometry/io/scene.hpp>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <set>
 #include <sstream>
+#include <vector>
 
 using boolean::csg_op;
 using boolean::mesh;
@@ -212,8 +215,28 @@ long components(mesh const& m) {
   return n;
 }
 
-/// `apply`, with the fast path checked against it: `combine` (no merged
-/// tree) gives the same mesh as the merged tree's boundary.
+/// A mesh as a set of faces, each the cycle of its vertices' coordinates
+/// started at its least vertex: equal for meshes that differ only in the
+/// numbering of vertices and the first vertex of each face.
+std::multiset<std::vector<std::array<Q, 3>>> face_cycles(mesh const& m) {
+  std::multiset<std::vector<std::array<Q, 3>>> out;
+  for (auto const& f : m.faces) {
+    std::vector<std::array<Q, 3>> c;
+    for (auto v : f) c.push_back({m.vertices[v].x(), m.vertices[v].y(), m.vertices[v].z()});
+    std::rotate(c.begin(), std::min_element(c.begin(), c.end()), c.end());
+    out.insert(std::move(c));
+  }
+  return out;
+}
+
+/// Planes made into one face on integer vertices, and planes in all, over
+/// every mesh `op` checked.
+std::size_t integer_planes = 0, all_planes = 0;
+
+/// `apply`, with the fast paths checked against it: `combine` (no merged
+/// tree) gives the same mesh as the merged tree's boundary, and the merged
+/// boundary's mesh is the same with and without the integer path for
+/// single faces (`build_mesh`).
 solid op(csg_op o, solid const& a, solid const& b) {
   auto r = boolean::apply(o, a, b);
   auto fast = boolean::combine(o, a, b), slow = boolean::to_mesh(r.tree);
@@ -221,6 +244,14 @@ solid op(csg_op o, solid const& a, solid const& b) {
   CHECK(fast.vertices.size() == slow.vertices.size());
   CHECK(boolean::volume(fast) == r.volume);
   CHECK(boolean::closed(fast) == boolean::closed(slow));
+  auto pieces = bsp::oriented_boundary(r.tree);
+  std::set<std::array<Q, 4>> planes;
+  for (auto const& p : pieces) planes.insert(boolean::detail::polyhedra::canonical(p));
+  all_planes += planes.size();
+  auto integer = boolean::detail::polyhedra::build_mesh(pieces, true, &integer_planes);
+  auto rational = boolean::detail::polyhedra::build_mesh(pieces, false);
+  CHECK(integer.vertices.size() == rational.vertices.size());
+  CHECK(face_cycles(integer) == face_cycles(rational));
   return r;
 }
 
@@ -465,6 +496,10 @@ TEST_CASE("Polyhedra: icospheres, inclusion–exclusion exactly", "[boolean][pol
   CHECK(boolean::closed(mc));
   CHECK(euler(mc) == 0);
   check_mesh(mc, cut.volume);
+  // Both ways of making a plane's faces ran: most planes are one face, the
+  // slab's faces with a hole are not.
+  CHECK(integer_planes > all_planes / 2);
+  CHECK(integer_planes < all_planes);
 }
 
 TEST_CASE("Polyhedra: random boxes, some rotated, combined in sequence", "[boolean][polyhedra]") {
