@@ -93,11 +93,11 @@ template <std::size_t N, class F> decltype(auto) with_restriction(std::size_t k,
   return [&]<std::size_t... K>(std::index_sequence<K...>) -> decltype(auto) {
     using R = decltype(f(std::integral_constant<std::size_t, 0>{}, std::false_type{}));
     R r{};
-    ((k == K ? (r = flip ? f(std::integral_constant<std::size_t, K>{}, std::true_type{})
-                         : f(std::integral_constant<std::size_t, K>{}, std::false_type{}),
-                true)
-             : false) ||
-     ...);
+    (void)((k == K ? (r = flip ? f(std::integral_constant<std::size_t, K>{}, std::true_type{})
+                               : f(std::integral_constant<std::size_t, K>{}, std::false_type{}),
+                      true)
+                   : false) ||
+           ...);
     return r;
   }(std::make_index_sequence<N>{});
 }
