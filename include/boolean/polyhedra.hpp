@@ -588,11 +588,21 @@ struct hvec_hash {
   }
 };
 
-/// A line of a face's plane, as the pieces' bounds give it: the restricted
-/// line with its first non-zero coefficient positive (equal keys, equal
-/// lines), a bounding plane through it and a direction along it.
+/// Homogeneous points numbered once each: equal points (equal primitive
+/// integer coordinates), one number, in order of first appearance.
+struct welder {
+  std::vector<hvec4> vertex;
+  std::unordered_map<hvec4, std::uint32_t, hvec_hash> number;
+  std::uint32_t operator()(hvec4 const& v) {
+    auto [it, added] = number.try_emplace(v, static_cast<std::uint32_t>(vertex.size()));
+    if (added) vertex.push_back(v);
+    return it->second;
+  }
+};
+
+/// A line of a face's plane, as the pieces' bounds give it: a bounding plane
+/// through it and a direction along it.
 struct line3 {
-  hvec3 key;
   hvec4 plane; ///< a plane meeting the face's plane in this line
   hvec3 along; ///< a direction of the line (the cross product of the two planes' normals)
 };
@@ -624,15 +634,11 @@ inline bool single_face(std::vector<piece3> const& pieces, std::vector<hvec4>& f
     if (p.axis != axis) return false;
   auto const& support = pieces.front().support.n;
 
+  // Lines by their restricted line with its first non-zero coefficient positive: equal keys, equal lines.
   std::vector<line3> lines;
   std::unordered_map<hvec3, std::uint32_t, hvec_hash> line_of;
-  std::vector<hvec4> vertex;
-  std::unordered_map<hvec4, std::uint32_t, hvec_hash> vertex_of;
-  auto vertex_id = [&](hvec4 const& v) {
-    auto [it, added] = vertex_of.try_emplace(v, static_cast<std::uint32_t>(vertex.size()));
-    if (added) vertex.push_back(v);
-    return it->second;
-  };
+  welder vertex_id;
+  auto const& vertex = vertex_id.vertex;
   struct event {
     std::uint32_t vertex;
     int delta;
@@ -663,7 +669,7 @@ inline bool single_face(std::vector<piece3> const& pieces, std::vector<hvec4>& f
                                       T(P[0] * B[1] - P[1] * B[0])};
             },
             support, bound.original.n);
-        lines.push_back({std::move(key), bound.original.n, std::move(along)});
+        lines.push_back({bound.original.n, std::move(along)});
         events.emplace_back();
       }
       // +1 from `a` to `b`: positive where edges run along `along`, negative where they run against it.
@@ -713,8 +719,7 @@ inline bool single_face(std::vector<piece3> const& pieces, std::vector<hvec4>& f
     loop.push_back(e);
     if (arriving[edges[e].to] != 1 || leaving[edges[e].to] == none) return false;
     e = leaving[edges[e].to];
-    if (e == 0) break;
-    if (loop.size() > edges.size()) return false;
+    if (e == 0) break; // each vertex reached once: the walk is a cycle through edge 0
   }
   if (loop.size() != edges.size()) return false; // several loops: holes or several polygons
 
@@ -734,17 +739,8 @@ inline bool single_face(std::vector<piece3> const& pieces, std::vector<hvec4>& f
     }
   }
 
-  // Joined runs make no straight vertex, but a run may be split where the sweep met a vertex of another line.
-  std::size_t n = loop.size();
-  for (std::size_t i = 0; i < n; ++i) {
-    auto const& e = edges[loop[i]];
-    if (edges[loop[(i + n - 1) % n]].line == e.line) continue;
-    face.push_back(vertex[e.from]);
-  }
-  if (face.size() < 3) {
-    face.clear();
-    return false;
-  }
+  // The sweep joined each line's runs, so consecutive edges lie on different lines: no vertex is straight.
+  for (auto e : loop) face.push_back(vertex[edges[e].from]);
   return true;
 }
 
@@ -855,16 +851,11 @@ inline mesh build_mesh(std::vector<piece3> boundary, bool integer_faces, std::si
   }
   // Every vertex once, by its primitive integer coordinates.
   mesh m;
-  std::vector<d::hvec4> vertex;
-  std::unordered_map<d::hvec4, std::uint32_t, d::hvec_hash> vertex_of;
+  d::welder weld;
   auto add_face = [&](std::vector<d::hvec4> const& f) {
     std::vector<std::uint32_t> g;
     g.reserve(f.size());
-    for (auto const& v : f) {
-      auto [it, added] = vertex_of.try_emplace(v, static_cast<std::uint32_t>(vertex.size()));
-      if (added) vertex.push_back(v);
-      g.push_back(it->second);
-    }
+    for (auto const& v : f) g.push_back(weld(v));
     m.faces.push_back(std::move(g));
   };
   std::vector<d::hvec4> face;
@@ -906,8 +897,8 @@ inline mesh build_mesh(std::vector<piece3> boundary, bool integer_faces, std::si
       add_face(face);
     }
   }
-  m.vertices.reserve(vertex.size());
-  for (auto const& v : vertex) {
+  m.vertices.reserve(weld.vertex.size());
+  for (auto const& v : weld.vertex) {
     auto const& z = v.integers(); // w > 0: one canonical fraction a coordinate
     m.vertices.emplace_back(rational(z[0], z[3]), rational(z[1], z[3]), rational(z[2], z[3]));
   }
