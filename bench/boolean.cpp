@@ -383,7 +383,7 @@ void genbsp_child(int fd, set_op op, multipolygon const& a, multipolygon const& 
     auto pieces = bsp::merged_boundary(ra.tree, ra.boundary, rb.tree, rb.boundary,
                                        [op](bool x, bool y) { return boolean::detail::label_op(op, x, y); });
     auto t2 = clock_type::now();
-    auto m = boolean::assemble(boolean::detail::left_edges(pieces));
+    auto m = boolean::detail::assemble_pieces(pieces);
     auto t3 = clock_type::now();
     auto d = [](auto x, auto y) { return std::chrono::duration<double>(y - x).count(); };
     runs.push_back(d(t0, t3));

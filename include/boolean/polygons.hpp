@@ -13,8 +13,10 @@
 #include <bsp/boolean.hpp>
 #include <bsp/point_set.hpp>
 #include <geometry/e2.hpp>
+#include <geometry/hash.hpp>
 
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -225,6 +227,61 @@ inline std::vector<directed_segment> left_edges(std::vector<plane_kernel::sub_hy
   return edges;
 }
 
+/// The signs of the cross and dot products of two lines' directions, from
+/// their coefficients: a line's direction is its normal turned a quarter
+/// turn, which keeps both products.
+inline geometry::sign normal_cross(geometry::hvec<rational, 3> const& m, geometry::hvec<rational, 3> const& n) {
+  return geometry::filtered_sign([](auto const& A, auto const& B) { return A[0] * B[1] - A[1] * B[0]; }, m, n);
+}
+inline geometry::sign normal_dot(geometry::hvec<rational, 3> const& m, geometry::hvec<rational, 3> const& n) {
+  return geometry::filtered_sign([](auto const& A, auto const& B) { return A[0] * B[0] + A[1] * B[1]; }, m, n);
+}
+
+/// The polygons bounded by `pieces`, each with the region on its negative
+/// side, as `assemble(left_edges(pieces))` gives them, without a rational
+/// operation until the rings are nested: vertices are numbered by their
+/// primitive integer homogeneous coordinates, each edge runs along its
+/// piece's support line (region on its left: the direction (−b, a) of the
+/// line ax + by + c = 0), loops are traced on numbers with the turns decided
+/// from the lines' coefficients, a vertex between two edges of one line is
+/// dropped, and each remaining vertex is made a rational point once.
+inline multipolygon assemble_pieces(std::vector<plane_kernel::sub_hyperplane> const& pieces) {
+  using geometry::sign;
+  geometry::welder<3> vertex_id, line_id;
+  std::vector<std::uint32_t> from, to, line;
+  from.reserve(pieces.size()), to.reserve(pieces.size()), line.reserve(pieces.size());
+  for (auto const& p : pieces) {
+    auto h = geometry::e2::homogeneous_endpoints(p);
+    if (h.empty() || h[0].sign_at(2) != sign::positive || h[1].sign_at(2) != sign::positive)
+      throw std::invalid_argument("boolean::polygons: the region is unbounded");
+    if (h[0] == h[1]) continue;
+    from.push_back(vertex_id(h[1]));
+    to.push_back(vertex_id(h[0]));
+    line.push_back(line_id(p.support.n));
+  }
+  auto const& lines = line_id.vertex;
+  auto loops = trace_loops(vertex_id.vertex.size(), from, to, [&](std::size_t in, std::size_t a, std::size_t b) {
+    return clockwise_before(-lines[line[in]], lines[line[a]], lines[line[b]], normal_cross, normal_dot);
+  });
+  std::vector<std::optional<point2>> point(vertex_id.vertex.size());
+  std::vector<ring> rings;
+  for (auto const& l : loops) {
+    ring r;
+    for (std::size_t i = 0, k = l.size(); i < k; ++i) {
+      std::size_t e = l[i], before = l[(i + k - 1) % k];
+      if (line[before] == line[e]) continue; // straight on
+      auto& q = point[from[e]];
+      if (!q) {
+        auto const& v = vertex_id.vertex[from[e]];
+        q.emplace(rational(v[0] / v[2]), rational(v[1] / v[2]));
+      }
+      r.push_back(*q);
+    }
+    if (r.size() >= 3) rings.push_back(std::move(r));
+  }
+  return nest(std::move(rings));
+}
+
 } // namespace detail
 
 /// The valid polygons with holes of `op(a, b)`, from the operands'
@@ -236,7 +293,7 @@ inline std::vector<directed_segment> left_edges(std::vector<plane_kernel::sub_hy
 inline multipolygon combine(set_op op, operand const& a, operand const& b) {
   auto pieces = bsp::merged_boundary(a.tree, a.boundary, b.tree, b.boundary,
                                      [op](bool x, bool y) { return detail::label_op(op, x, y); });
-  return assemble(detail::left_edges(pieces));
+  return detail::assemble_pieces(pieces);
 }
 
 /// The exact area of a region; nothing when it is unbounded.
@@ -244,6 +301,6 @@ inline std::optional<rational> area(region2 const& r) { return bsp::measure(r, t
 
 /// The valid polygons with holes of a bounded region (see rings.hpp for the
 /// rules they follow).  Throws `std::invalid_argument` for an unbounded region.
-inline multipolygon polygons(region2 const& r) { return assemble(detail::left_edges(bsp::oriented_boundary(r))); }
+inline multipolygon polygons(region2 const& r) { return detail::assemble_pieces(bsp::oriented_boundary(r)); }
 
 } // namespace boolean

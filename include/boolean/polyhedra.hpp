@@ -24,6 +24,7 @@
 #include <bsp/splitter.hpp>
 #include <geometry/e2.hpp>
 #include <geometry/e3.hpp>
+#include <geometry/hash.hpp>
 #include <geometry/io/polygons.hpp>
 #include <geometry/io/scene.hpp>
 
@@ -565,40 +566,8 @@ inline std::vector<std::array<std::uint32_t, 3>> ear_clip(std::vector<point2> co
 using hvec4 = geometry::hvec<rational, 4>;
 using hvec3 = geometry::hvec<rational, 3>;
 
-/// Hash of an exact homogeneous vector, from the low 64 bits of its
-/// primitive integer coordinates (equal vectors, equal integers; `==` then
-/// compares them whole).
-struct hvec_hash {
-  template <std::size_t N> std::size_t operator()(geometry::hvec<rational, N> const& v) const {
-    auto const& z = v.integer_view();
-    std::uint64_t h = N;
-    for (std::size_t i = 0; i < N; ++i) {
-      std::uint64_t low;
-      if (z.mid()) {
-        low = static_cast<std::uint64_t>(z.z128[i]);
-      } else {
-        mpz_srcptr p = z.big()[i].backend().data();
-        std::uint64_t m = mpz_size(p) != 0 ? mpz_getlimbn(p, 0) : 0;
-        low = mpz_sgn(p) < 0 ? ~m + 1 : m;
-      }
-      h = (h ^ low) * 0x9e3779b97f4a7c15ull;
-      h ^= h >> 29;
-    }
-    return static_cast<std::size_t>(h);
-  }
-};
-
-/// Homogeneous points numbered once each: equal points (equal primitive
-/// integer coordinates), one number, in order of first appearance.
-struct welder {
-  std::vector<hvec4> vertex;
-  std::unordered_map<hvec4, std::uint32_t, hvec_hash> number;
-  std::uint32_t operator()(hvec4 const& v) {
-    auto [it, added] = number.try_emplace(v, static_cast<std::uint32_t>(vertex.size()));
-    if (added) vertex.push_back(v);
-    return it->second;
-  }
-};
+using geometry::hvec_hash;
+using welder = geometry::welder<4>;
 
 /// A line of a face's plane, as the pieces' bounds give it: a bounding plane
 /// through it and a direction along it.

@@ -100,20 +100,28 @@ inline vec2 edge_vector(directed_segment const& e) { return {e.to.x() - e.from.x
 inline geometry::sign cross(vec2 const& a, vec2 const& b) { return geometry::sign_of(rational(a.x * b.y - a.y * b.x)); }
 inline geometry::sign dot(vec2 const& a, vec2 const& b) { return geometry::sign_of(rational(a.x * b.x + a.y * b.y)); }
 
-/// Clockwise angle from `r` to `d` in (0, 2π], as an order: 0 for (0, π),
+/// Clockwise angle from a direction `r` to a direction `d` in (0, 2π], as
+/// an order, from the signs of their cross and dot products: 0 for (0, π),
 /// 1 for π, 2 for (π, 2π), 3 for 2π (the direction of `r` itself).
-inline int half(vec2 const& r, vec2 const& d) {
-  auto c = cross(r, d);
-  if (c == geometry::sign::negative) return 0;
-  if (c == geometry::sign::positive) return 2;
-  return dot(r, d) == geometry::sign::negative ? 1 : 3;
+inline int half(geometry::sign cross_rd, geometry::sign dot_rd) {
+  if (cross_rd == geometry::sign::negative) return 0;
+  if (cross_rd == geometry::sign::positive) return 2;
+  return dot_rd == geometry::sign::negative ? 1 : 3;
 }
 
-/// Whether `a` comes before `b` turning clockwise from `r`.
-inline bool clockwise_before(vec2 const& r, vec2 const& a, vec2 const& b) {
-  int ha = half(r, a), hb = half(r, b);
+/// Whether `a` comes before `b` turning clockwise from `r`, for directions
+/// of any representation with the signs of their `cross` and `dot` products.
+template <class V, class Cross, class Dot>
+bool clockwise_before(V const& r, V const& a, V const& b, Cross const& cross, Dot const& dot) {
+  int ha = half(cross(r, a), dot(r, a)), hb = half(cross(r, b), dot(r, b));
   if (ha != hb) return ha < hb;
   return cross(a, b) == geometry::sign::negative;
+}
+
+/// The same for exact vectors.
+inline bool clockwise_before(vec2 const& r, vec2 const& a, vec2 const& b) {
+  return clockwise_before(r, a, b, [](vec2 const& u, vec2 const& v) { return cross(u, v); },
+                          [](vec2 const& u, vec2 const& v) { return dot(u, v); });
 }
 
 /// Whether the ring goes straight on at `b` (from `a`, on to `c`).
@@ -161,54 +169,75 @@ inline location ring_in_ring(ring const& inner, ring const& outer) {
   return location::boundary;
 }
 
-/// Closed walks over the directed edges `from[i] → to[i]`: at a vertex with
-/// several edges leaving, the walk takes the one that `prefer(arriving, a, b)`
-/// puts first.  A walk that passes twice through a vertex is cut there into
-/// loops that pass once each (a hole touching its outer ring is walked as
-/// one ring through the touching vertex; the simple-features rules want
-/// two).  Returns each loop as its edges in order.  Throws
-/// `std::invalid_argument` when the edges do not close up.
-template <class Key, class Less, class Prefer>
-std::vector<std::vector<std::size_t>> trace_loops(std::vector<Key> const& from, std::vector<Key> const& to, Prefer prefer) {
-  std::map<Key, std::vector<std::size_t>, Less> leaving;
-  for (std::size_t i = 0; i < from.size(); ++i) leaving[from[i]].push_back(i);
-  std::vector<bool> used(from.size(), false);
+/// Closed walks over the directed edges `from[i] → to[i]` between vertices
+/// numbered below `vertices`: at a vertex with several edges leaving, the
+/// walk takes the one that `prefer(arriving, a, b)` puts first.  A walk that
+/// passes twice through a vertex is cut there into loops that pass once each
+/// (a hole touching its outer ring is walked as one ring through the
+/// touching vertex; the simple-features rules want two).  Returns each loop
+/// as its edges in order.  Throws `std::invalid_argument` when the edges do
+/// not close up.
+template <class Prefer>
+std::vector<std::vector<std::size_t>> trace_loops(std::size_t vertices, std::vector<std::uint32_t> const& from,
+                                                  std::vector<std::uint32_t> const& to, Prefer prefer) {
+  std::size_t m = from.size();
+  // The edges leaving each vertex, packed: those of v are leaving[first[v] … first[v + 1]).
+  std::vector<std::uint32_t> first(vertices + 1, 0), leaving(m);
+  for (auto v : from) ++first[v + 1];
+  for (std::size_t v = 0; v < vertices; ++v) first[v + 1] += first[v];
+  {
+    std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
+    for (std::size_t i = 0; i < m; ++i) leaving[fill[from[i]]++] = static_cast<std::uint32_t>(i);
+  }
+  constexpr std::uint32_t none = ~std::uint32_t{0};
+  std::vector<bool> used(m, false);
+  std::vector<std::uint32_t> at(vertices, none); // where a vertex left the stack below
   std::vector<std::vector<std::size_t>> loops;
-  for (std::size_t start = 0; start < from.size(); ++start) {
+  std::vector<std::size_t> walk, stack;
+  for (std::size_t start = 0; start < m; ++start) {
     if (used[start]) continue;
-    std::vector<std::size_t> walk;
+    walk.clear();
     std::size_t e = start;
     for (;;) {
       used[e] = true;
       walk.push_back(e);
-      auto it = leaving.find(to[e]);
-      if (it == leaving.end()) throw std::invalid_argument("boolean: the boundary does not close");
-      std::size_t best = from.size();
-      for (auto c : it->second) {
+      std::size_t best = m;
+      for (auto k = first[to[e]]; k < first[to[e] + 1]; ++k) {
+        std::size_t c = leaving[k];
         if (used[c] && c != start) continue;
-        if (best == from.size() || prefer(e, c, best)) best = c;
+        if (best == m || prefer(e, c, best)) best = c;
       }
-      if (best == from.size()) throw std::invalid_argument("boolean: the boundary does not close");
+      if (best == m) throw std::invalid_argument("boolean: the boundary does not close");
       if (best == start) break;
       e = best;
     }
     // Cut at repeated vertices: a stack of edges and where each vertex left it.
-    std::map<Key, std::size_t, Less> at;
-    std::vector<std::size_t> stack;
+    stack.clear();
     for (auto f : walk) {
-      auto pos = at.find(from[f]);
-      if (pos != at.end()) {
-        std::size_t k = pos->second;
-        for (std::size_t j = k; j < stack.size(); ++j) at.erase(from[stack[j]]);
+      if (std::size_t k = at[from[f]]; k != none) {
+        for (std::size_t j = k; j < stack.size(); ++j) at[from[stack[j]]] = none;
         loops.emplace_back(stack.begin() + static_cast<std::ptrdiff_t>(k), stack.end());
         stack.resize(k);
       }
-      at.emplace(from[f], stack.size());
+      at[from[f]] = static_cast<std::uint32_t>(stack.size());
       stack.push_back(f);
     }
-    if (!stack.empty()) loops.push_back(std::move(stack));
+    for (auto f : stack) at[from[f]] = none;
+    if (!stack.empty()) loops.push_back(stack);
   }
   return loops;
+}
+
+/// The same over vertices given by keys ordered by `Less`: equal keys, one vertex.
+template <class Key, class Less, class Prefer>
+std::vector<std::vector<std::size_t>> trace_loops(std::vector<Key> const& from, std::vector<Key> const& to, Prefer prefer) {
+  std::map<Key, std::uint32_t, Less> number;
+  auto id = [&](Key const& k) { return number.try_emplace(k, static_cast<std::uint32_t>(number.size())).first->second; };
+  std::vector<std::uint32_t> f, t;
+  f.reserve(from.size()), t.reserve(to.size());
+  for (auto const& k : from) f.push_back(id(k));
+  for (auto const& k : to) t.push_back(id(k));
+  return trace_loops(number.size(), f, t, prefer);
 }
 
 /// The bounding box of a ring in doubles.  Rounding to nearest is monotone,

@@ -46,6 +46,8 @@ ring random_star(int k, long radius, bool decimals) {
 /// same membership as the tree at sample points (vertices, midpoints, random).
 void check_output(boolean::region2 const& r) {
   auto m = boolean::polygons(r);
+  // The rings on integer vertices are those of the rational path, vertex for vertex.
+  CHECK(m == boolean::assemble(boolean::detail::left_edges(bsp::oriented_boundary(r))));
   INFO("polygons: " << m.size());
   CHECK(test::validity_problem(m) == "");
   CHECK(boolean::area(m) == *boolean::area(r));
@@ -72,6 +74,9 @@ void check_combine(boolean::operand const& a, boolean::operand const& b) {
   for (auto op : {set_op::union_, set_op::intersection, set_op::difference, set_op::symmetric_difference}) {
     auto m = boolean::combine(op, a, b);
     CHECK(test::validity_problem(m) == "");
+    auto pieces = bsp::merged_boundary(a.tree, a.boundary, b.tree, b.boundary,
+                                       [op](bool x, bool y) { return boolean::detail::label_op(op, x, y); });
+    CHECK(m == boolean::assemble(boolean::detail::left_edges(pieces)));
     CHECK(boolean::area(m) == *boolean::area(boolean::apply(op, a.tree, b.tree)));
   }
 }

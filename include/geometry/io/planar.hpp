@@ -29,6 +29,7 @@ using ring = std::vector<point2>;
 struct polygon_with_holes {
   ring outer;
   std::vector<ring> holes;
+  friend bool operator==(polygon_with_holes const&, polygon_with_holes const&) = default;
 };
 
 /// A set of polygons with holes.
