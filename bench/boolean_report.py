@@ -244,7 +244,7 @@ def results_section(d):
     lines = ["### Results", "",
              "The raw measurements: [CSV](data/boolean-results.csv), [JSON](data/boolean-results.json). Times "
              "are medians in seconds; *build / classify / output* split genbsp's time into `operand_of` of both "
-             "operands, `bsp::merged_boundary` (the boundaries classified, no merged tree) and `assemble` (medians of each part). *P / R / V*: output polygons, rings "
+             "operands, `bsp::merged_boundary` (the boundaries classified, no merged tree) and the rings' assembly (medians of each part). *P / R / V*: output polygons, rings "
              "(outer rings and holes) and vertices. *Area diff*: |Boost's area − exact area| / exact area. "
              "*Runs*: genbsp's and Boost's.", ""]
     lines.append(table(["Input", "Operation", "Size", "Input vertices", "genbsp s", "build / classify / output",
