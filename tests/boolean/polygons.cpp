@@ -18,6 +18,8 @@ using boolean::set_op;
 using test::Q;
 using P = boolean::point2;
 
+namespace boolean_polygons_tests {
+
 namespace {
 
 ring rect(Q x0, Q y0, Q x1, Q y1) { return {P(x0, y0), P(x1, y0), P(x1, y1), P(x0, y1)}; }
@@ -198,3 +200,5 @@ TEST_CASE("E2 Boolean operations: inclusion-exclusion on random star polygons", 
     for (auto const* r : {&U, &I, &D, &X}) check_output(*r);
   }
 }
+
+} // namespace boolean_polygons_tests

@@ -16,6 +16,8 @@ using boolean::loop;
 using boolean::set_op;
 using test::Q;
 
+namespace boolean_spherical_tests {
+
 namespace {
 
 constexpr double pi = std::numbers::pi;
@@ -177,3 +179,5 @@ TEST_CASE("S2 Boolean operations: inclusion-exclusion on random spherical polygo
       if (inside_cells(*r)) check_round_trip(*r);
   }
 }
+
+} // namespace boolean_spherical_tests

@@ -18,6 +18,8 @@
 using namespace geometry;
 using test::Q;
 
+namespace bsp_coverage_tests {
+
 namespace {
 
 using K = e2::exact_kernel;
@@ -271,3 +273,5 @@ TEST_CASE("insert_merged reports a piece in maximal visible and hidden parts", "
   }
   CHECK(fewer > 0);
 }
+
+} // namespace bsp_coverage_tests

@@ -13,6 +13,8 @@
 using namespace geometry;
 using test::Q;
 
+namespace bsp_depth_order_tests {
+
 namespace {
 
 using P3 = e3::point<Q>;
@@ -240,3 +242,5 @@ TEST_CASE("E2 depth order: front to back for segment soups", "[bsp][depth][e2]")
   std::cout << "E2 depth order: " << compared << " ordered pairs of hits checked\n";
   CHECK(compared > 2000);
 }
+
+} // namespace bsp_depth_order_tests

@@ -12,6 +12,8 @@
 using namespace geometry;
 using test::Q;
 
+namespace bsp_e2_sets_tests {
+
 namespace {
 
 using K = e2::exact_kernel;
@@ -211,3 +213,5 @@ TEST_CASE("E2 point sets in double on non-degenerate input", "[bsp][e2][double]"
     CHECK(u + i == Approx(shoelace(ra).convert_to<double>() + shoelace(rb).convert_to<double>()).epsilon(1e-9));
   }
 }
+
+} // namespace bsp_e2_sets_tests

@@ -19,6 +19,8 @@
 using namespace geometry;
 using test::Q;
 
+namespace bsp_explain_tests {
+
 namespace {
 
 using K1 = e1::exact_kernel;
@@ -161,3 +163,5 @@ TEST_CASE("E2: every step of a build covers the plane once, and ends as the tree
     CHECK(inside == expected);
   }
 }
+
+} // namespace bsp_explain_tests

@@ -11,6 +11,8 @@
 using namespace geometry;
 using test::Q;
 
+namespace bsp_sets_tests {
+
 namespace {
 constexpr double pi = std::numbers::pi;
 }
@@ -291,3 +293,5 @@ TEST_CASE("E3 point sets from boxes meeting face to face: every splitting order 
   }
   CHECK(compared > 2000);
 }
+
+} // namespace bsp_sets_tests

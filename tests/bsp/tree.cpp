@@ -13,6 +13,8 @@
 using namespace geometry;
 using test::Q;
 
+namespace bsp_tree_tests {
+
 namespace {
 using K = e2::exact_kernel;
 using P = e2::point<Q>;
@@ -86,3 +88,5 @@ TEST_CASE("SVG pictures of E2 and S2 trees", "[bsp][svg]") {
   CHECK(count(sout.str(), "fill=\"teal\"") == 1);
   CHECK(count(sout.str(), "<circle") == 2);
 }
+
+} // namespace bsp_tree_tests

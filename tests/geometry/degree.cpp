@@ -12,6 +12,8 @@
 using namespace geometry;
 using test::Q;
 
+namespace geometry_degree_tests {
+
 namespace {
 
 /// Splits `region` by `n` hyperplanes from `make`, keeping the part holding
@@ -119,3 +121,5 @@ TEST_CASE("S2: predicate bit length does not grow over 1000 splits", "[degree][s
       [](auto const& c, auto const& h) { return s2::split(c, h); }, cuts);
   report("S2", at, cuts);
 }
+
+} // namespace geometry_degree_tests

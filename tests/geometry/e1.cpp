@@ -7,6 +7,8 @@ using namespace geometry;
 using test::as;
 using test::Q;
 
+namespace geometry_e1_tests {
+
 TEMPLATE_TEST_CASE("E1 predicates agree with the exact value", "[e1]", double, rational) {
   using FT = TestType;
   for (int t = 0; t < 500; ++t) {
@@ -63,3 +65,5 @@ TEMPLATE_TEST_CASE("E1 points split and report coincidence", "[e1]", double, rat
   e1::sub_hyperplane<FT> t{e1::hyperplane_at(FT(2), false)};
   CHECK(e1::split(t, e1::hyperplane_at(FT(1))).positive);
 }
+
+} // namespace geometry_e1_tests

@@ -7,6 +7,8 @@ using namespace geometry;
 using test::as;
 using test::Q;
 
+namespace geometry_e2_tests {
+
 namespace {
 
 template <class FT> e2::point<FT> pt(Q const& x, Q const& y) { return {as<FT>(x), as<FT>(y)}; }
@@ -211,3 +213,5 @@ TEMPLATE_TEST_CASE("E2 segments split exactly and report coincidence", "[e2]", d
     check_same(o.second, P(0, 0));
   }
 }
+
+} // namespace geometry_e2_tests

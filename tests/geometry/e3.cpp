@@ -7,6 +7,8 @@ using namespace geometry;
 using test::as;
 using test::Q;
 
+namespace geometry_e3_tests {
+
 namespace {
 
 template <class FT> e3::point<FT> pt(Q const& x, Q const& y, Q const& z) { return {as<FT>(x), as<FT>(y), as<FT>(z)}; }
@@ -255,3 +257,5 @@ TEST_CASE("det4 agrees with the cofactor expansion along the first row", "[e3][l
     if (t % 4 == 0) CHECK(expansion == 0);
   }
 }
+
+} // namespace geometry_e3_tests

@@ -12,6 +12,8 @@
 using namespace geometry;
 using test::Q;
 
+namespace geometry_filter_tests {
+
 namespace {
 
 /// Plain double for the length of a test: the double kernel's signs
@@ -490,3 +492,5 @@ TEST_CASE("the 128-bit gcd of constructions agrees with GMP's", "[filter][constr
   CHECK(detail::gcd(uint128{1} << 127, uint128{3} << 100) == (uint128{1} << 100));
   CHECK(checked == 20000);
 }
+
+} // namespace geometry_filter_tests

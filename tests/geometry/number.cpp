@@ -7,6 +7,8 @@ using geometry::parse_error;
 using geometry::parse_number;
 using geometry::rational;
 
+namespace geometry_number_tests {
+
 TEST_CASE("decimal text is read exactly", "[number]") {
   CHECK(parse_number<rational>("-0.1") == rational(-1, 10));
   CHECK(parse_number<rational>("1e-3") == rational(1, 1000));
@@ -54,3 +56,5 @@ TEST_CASE("bit length grows with the number", "[number]") {
   CHECK(geometry::bit_length(rational(1)) == 2);
   CHECK(geometry::bit_length(rational(255, 2)) == 10);
 }
+
+} // namespace geometry_number_tests

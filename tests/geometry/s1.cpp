@@ -9,6 +9,8 @@ using namespace geometry;
 using test::as;
 using test::Q;
 
+namespace geometry_s1_tests {
+
 namespace {
 constexpr double pi = std::numbers::pi;
 template <class FT> s1::point<FT> dir(Q const& x, Q const& y) { return s1::point<FT>(std::array<FT, 2>{as<FT>(x), as<FT>(y)}); }
@@ -77,3 +79,5 @@ TEMPLATE_TEST_CASE("S1 point pairs split and report coincidence", "[s1]", double
   CHECK(one.negative);
   CHECK_FALSE(one.positive);
 }
+
+} // namespace geometry_s1_tests

@@ -9,6 +9,8 @@ using namespace geometry;
 using test::as;
 using test::Q;
 
+namespace geometry_s2_tests {
+
 namespace {
 
 constexpr double pi = std::numbers::pi;
@@ -150,3 +152,5 @@ TEMPLATE_TEST_CASE("S2 arcs split by length and report coincidence", "[s2]", dou
     CHECK(sum == Approx(s2::length(s)).epsilon(1e-12));
   }
 }
+
+} // namespace geometry_s2_tests

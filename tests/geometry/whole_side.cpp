@@ -12,6 +12,8 @@
 using namespace geometry;
 using test::Q;
 
+namespace geometry_whole_side_tests {
+
 namespace {
 
 template <class K> void agree(typename K::sub_hyperplane const& s, typename K::hyperplane const& h, int& decided, int& straddling) {
@@ -58,3 +60,5 @@ TEST_CASE("whole_side agrees with split in E2, S2 and E3, degenerate cases inclu
   CHECK(decided > 3000);
   CHECK(straddling > 1000);
 }
+
+} // namespace geometry_whole_side_tests

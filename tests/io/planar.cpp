@@ -15,6 +15,8 @@
 using namespace geometry;
 using test::Q;
 
+namespace io_planar_tests {
+
 namespace {
 
 std::string error_of(auto&& f) {
@@ -121,3 +123,5 @@ TEST_CASE("Walls: polygons and line strings from WKT and GeoJSON files", "[io][w
         std::string::npos);
   std::filesystem::remove_all(dir);
 }
+
+} // namespace io_planar_tests

@@ -15,6 +15,8 @@
 using namespace geometry;
 using test::Q;
 
+namespace io_polygons_tests {
+
 namespace {
 
 using V = std::array<Q, 3>;
@@ -335,3 +337,5 @@ TEST_CASE("a hand-built face with a missing vertex is an error, not undefined be
   s.faces.push_back({{0, 1, 2}, std::nullopt, 0});
   CHECK_THROWS_AS(io::convex_polygons(s), std::out_of_range);
 }
+
+} // namespace io_polygons_tests

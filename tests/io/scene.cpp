@@ -17,6 +17,8 @@
 using namespace geometry;
 using io::read_error;
 using test::Q;
+namespace io_scene_tests {
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -449,3 +451,5 @@ TEST_CASE("read_scene: dispatch by extension, and files it cannot open", "[io]")
   check_error([&] { io::read_scene(tmp.dir / "dir.stl"); }, (tmp.dir / "dir.stl").string(), 0,
               "cannot open: is a directory");
 }
+
+} // namespace io_scene_tests

@@ -12,6 +12,8 @@
 #include <optional>
 #include <vector>
 
+namespace svm_coverage_pass_tests {
+
 namespace {
 
 using geometry::rational;
@@ -141,3 +143,5 @@ TEST_CASE("The visibility pass on the sphere: each direction sees the first frag
 TEST_CASE("The visibility pass on the circle: each direction sees the first fragment that holds it", "[coverage_pass]") {
   check_pass<circle_target>(60, 40, 400);
 }
+
+} // namespace svm_coverage_pass_tests

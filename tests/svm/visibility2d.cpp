@@ -10,6 +10,8 @@
 #include <optional>
 #include <vector>
 
+namespace svm_visibility2d_tests {
+
 namespace {
 
 using geometry::rational;
@@ -369,3 +371,5 @@ TEST_CASE("An eye on the boundaries of several polygons looks into each; at a ho
   auto c2 = svm::visibility(corner, point(Q(2), Q(0)));
   CHECK(*svm::area(c2, corner) == Q(29, 2));
 }
+
+} // namespace svm_visibility2d_tests
