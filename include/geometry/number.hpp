@@ -84,8 +84,39 @@ inline integer decimal_integer(std::string_view digits) {
   return n;
 }
 
+/// `[+-]digits[.digits]` with at most 18 digits in all, as a numerator and
+/// a power of ten in machine words; `false` for anything else (exponents,
+/// fractions, longer numbers, bad text), which `parse_rational` then reads.
+inline bool short_decimal(std::string_view text, long& numerator, long& denominator) noexcept {
+  std::size_t i = 0;
+  bool negative = false;
+  if (i < text.size() && (text[i] == '+' || text[i] == '-')) negative = text[i++] == '-';
+  long n = 0, d = 1;
+  std::size_t digits = 0;
+  bool point = false;
+  for (; i < text.size(); ++i) {
+    char c = text[i];
+    if (is_digit(c)) {
+      if (++digits > 18) return false;
+      n = n * 10 + (c - '0');
+      if (point) d *= 10;
+    } else if (c == '.' && !point) {
+      point = true;
+    } else {
+      return false;
+    }
+  }
+  if (digits == 0) return false;
+  numerator = negative ? -n : n;
+  denominator = d;
+  return true;
+}
+
 /// Parses `[+-]digits[.digits][(e|E)[+-]digits]` or `[+-]digits/digits` exactly.
 inline rational parse_rational(std::string_view text) {
+  // Integers and short decimals, the common coordinates, without GMP's text
+  // conversion (a mesh's reading was mostly that).
+  if (long n = 0, d = 1; short_decimal(text, n, d)) return d == 1 ? rational(n) : rational(n, d);
   auto fail = [&](char const* why) -> rational {
     throw parse_error("not a number '" + std::string(text) + "': " + why);
   };

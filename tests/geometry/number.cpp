@@ -3,6 +3,9 @@
 #include <catch2/catch.hpp>
 #include <geometry/number.hpp>
 
+#include <random>
+#include <string>
+
 using geometry::parse_error;
 using geometry::parse_number;
 using geometry::rational;
@@ -27,6 +30,42 @@ TEST_CASE("decimal text is read exactly", "[number]") {
   CHECK(big == rational(boost::multiprecision::mpz_int("123456789012345678901234567890123456789")));
   // 0.1 is not the double 0.1.
   CHECK(parse_number<rational>("0.1") != rational(0.1));
+}
+
+TEST_CASE("short decimals read on machine words equal the general reading", "[number]") {
+  // parse_rational reads up to 18 digits in machine words and longer or
+  // other numbers through GMP; both must give the same canonical rational.
+  auto expected = [](bool negative, std::string const& digits, int after_point) {
+    boost::multiprecision::mpz_int n = 0, d = 1; // digit by digit: a leading zero is not octal
+    for (char c : digits) n = n * 10 + (c - '0');
+    for (int k = 0; k < after_point; ++k) d *= 10;
+    rational r(n, d);
+    return negative ? rational(-r) : r;
+  };
+  std::mt19937_64 random(20261206);
+  for (int i = 0; i < 20000; ++i) {
+    int length = 1 + static_cast<int>(random() % 21); // 1 to 21 digits: both sides of 18
+    std::string digits;
+    for (int k = 0; k < length; ++k) digits += static_cast<char>('0' + random() % 10);
+    if (i % 7 == 0) digits = std::string(static_cast<std::size_t>(length), '9'); // the largest of each length
+    int after_point = static_cast<int>(random() % static_cast<unsigned>(length + 1));
+    bool negative = random() % 2 == 1;
+    auto split = digits.size() - static_cast<std::size_t>(after_point);
+    std::string text;
+    if (negative) text += '-';
+    else if (random() % 4 == 0) text += '+';
+    text.append(digits, 0, split);
+    if (after_point > 0 || random() % 5 == 0) text.append(1, '.').append(digits, split);
+    INFO("input: '" << text << "'");
+    rational got = parse_number<rational>(text), want = expected(negative, digits, after_point);
+    REQUIRE(got == want);
+    // Canonical: the same numerator and denominator, not only equal values.
+    REQUIRE(boost::multiprecision::numerator(got) == boost::multiprecision::numerator(want));
+    REQUIRE(boost::multiprecision::denominator(got) == boost::multiprecision::denominator(want));
+  }
+  CHECK(parse_number<rational>("999999999999999999") == rational(999999999999999999LL));
+  CHECK(parse_number<rational>("-0.000000000000000001") == rational(-1, 1000000000000000000LL));
+  CHECK(parse_number<rational>("-0") == rational(0));
 }
 
 TEST_CASE("garbage is rejected with a reason, never read as 0", "[number]") {
