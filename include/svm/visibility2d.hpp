@@ -49,7 +49,8 @@ template <geometry::number FT> struct wall_scene {
   /// boundary it lies on, and out of none.  Empty: every ring is a polygon.
   std::vector<std::size_t> ring_polygon;
 
-  /// The ends of wall `i`.
+  /// The ends of wall `i` (walks the rings: `wall_table` looks walls up
+  /// in logarithmic time, and `for_each_wall` visits them all in order).
   std::array<geometry::e2::point<FT>, 2> wall(std::size_t i) const {
     for (auto const& r : rings) {
       if (i < r.size()) return {r[i], r[(i + 1) % r.size()]};
@@ -62,6 +63,42 @@ template <geometry::number FT> struct wall_scene {
     for (auto const& r : rings) n += r.size();
     return n;
   }
+  /// Calls `f(i, a, b)` for every wall `i` from `a` to `b`, in order.
+  template <class F> void for_each_wall(F&& f) const {
+    std::size_t i = 0;
+    for (auto const& r : rings)
+      for (std::size_t k = 0; k < r.size(); ++k) f(i++, r[k], r[(k + 1) % r.size()]);
+    for (auto const& s : segments) f(i++, s[0], s[1]);
+  }
+};
+
+/// Wall `i` of a scene in O(log rings) (`wall_scene::wall` walks the rings):
+/// the number of each ring's first wall, kept.  It refers to the scene,
+/// which must outlive it unchanged.
+template <geometry::number FT> class wall_table {
+public:
+  explicit wall_table(wall_scene<FT> const& scene) : scene_(&scene) {
+    first_.reserve(scene.rings.size() + 1);
+    std::size_t n = 0;
+    for (auto const& r : scene.rings) {
+      first_.push_back(n);
+      n += r.size();
+    }
+    first_.push_back(n);
+  }
+  /// The ends of wall `i`.
+  std::array<geometry::e2::point<FT>, 2> operator()(std::size_t i) const {
+    if (i >= first_.back()) return scene_->segments.at(i - first_.back());
+    // The last ring that starts at or before i (empty rings start where the next does).
+    auto k = static_cast<std::size_t>(std::upper_bound(first_.begin(), first_.end(), i) - first_.begin()) - 1;
+    auto const& r = scene_->rings[k];
+    std::size_t j = i - first_[k];
+    return {r[j], r[(j + 1) % r.size()]};
+  }
+
+private:
+  wall_scene<FT> const* scene_;
+  std::vector<std::size_t> first_; ///< of each ring, then the number of ring walls
 };
 
 /// Labels of arcs where no wall is seen.
@@ -203,17 +240,29 @@ public:
     namespace e2 = geometry::e2;
     auto t0 = std::chrono::steady_clock::now();
     bsp::fragment_list<kernel, std::uint32_t> input;
-    std::size_t n = scene_.wall_count();
-    for (std::uint32_t i = 0; i < n; ++i) {
-      auto [a, b] = scene_.wall(i);
-      if (a == b) continue; // a repeated vertex: no wall
-      input.push_back({e2::segment(a, b, i), i});
+    scene_.for_each_wall([&](std::size_t i, e2::point<FT> const& a, e2::point<FT> const& b) {
+      if (a == b) return; // a repeated vertex: no wall
+      input.push_back({e2::segment(a, b, i), static_cast<std::uint32_t>(i)});
+    });
+    // The rings' vertices in double, and each ring's box of them, for the
+    // test of where the eye lies on the rings (`blocked`).
+    for (auto const& r : scene_.rings) {
+      auto& ds = ring_doubles_.emplace_back();
+      std::array<double, 4> box{0, 0, 0, 0};
+      for (auto const& p : r) {
+        std::array<double, 2> d{geometry::to_double(p.x()), geometry::to_double(p.y())};
+        if (ds.empty()) box = {d[0], d[1], d[0], d[1]};
+        box = {std::min(box[0], d[0]), std::min(box[1], d[1]), std::max(box[2], d[0]), std::max(box[3], d[1])};
+        ds.push_back(d);
+      }
+      ring_boxes_.push_back(box);
     }
     walls_ = input.size();
     tree_ = bsp::build_depth_order<kernel>(std::move(input), bsp::few_splits(no_cut{}, seed_));
     bsp::for_each_front_to_back(tree_, e2::point<FT>(), [&](auto const&) { ++fragments_; });
     // Each node's box: of the walls of the fragments in its subtree (input
     // coordinates, exact), children before parents.
+    wall_table<FT> walls(scene_);
     boxes_.resize(tree_.interior_count());
     std::vector<std::pair<bsp::node_id, bool>> stack{{tree_.root(), false}};
     while (!stack.empty()) {
@@ -228,7 +277,7 @@ public:
       }
       auto& b = boxes_[n.index()];
       for (auto const& fr : tree_.node_data(n)) {
-        for (auto const& p : scene_.wall(fr.id)) b.add(p);
+        for (auto const& p : walls(fr.id)) b.add(p);
         ++b.fragments;
       }
       for (auto c : {tree_.negative(n), tree_.positive(n)})
@@ -414,8 +463,16 @@ private:
     auto dir = [&](e2::point<FT> const& p) {
       return s1::point<FT>(std::array<FT, 2>{FT(p.x() - eye.x()), FT(p.y() - eye.y())});
     };
+    // The eye in double: where it is on a ring exactly, it is there in
+    // double too (rounding is monotone), so the rings and edges whose boxes
+    // of doubles do not hold it are passed over without exact arithmetic.
+    double ex = to_double(eye.x()), ey = to_double(eye.y());
+    auto holds = [ex, ey](double x0, double y0, double x1, double y1) { return x0 <= ex && ex <= x1 && y0 <= ey && ey <= y1; };
     for (std::size_t ri = 0; ri < scene_.rings.size(); ++ri) {
+      auto const& box = ring_boxes_[ri];
+      if (!holds(box[0], box[1], box[2], box[3])) continue;
       auto const& r = scene_.rings[ri];
+      auto const& rd = ring_doubles_[ri];
       std::size_t polygon = ri < scene_.ring_polygon.size() ? scene_.ring_polygon[ri] : ri;
       auto arcs_of = [&]() -> std::vector<s1::polytope<FT>>& {
         for (auto& [q, arcs] : per)
@@ -424,6 +481,8 @@ private:
       };
       std::size_t k = r.size();
       for (std::size_t i = 0; i < k; ++i) {
+        auto const &fa = rd[i], &fb = rd[(i + 1) % k];
+        if (!holds(std::min(fa[0], fb[0]), std::min(fa[1], fb[1]), std::max(fa[0], fb[0]), std::max(fa[1], fb[1]))) continue;
         auto const &a = r[i], &b = r[(i + 1) % k];
         if (a == b) continue;
         if (a == eye) {
@@ -479,6 +538,8 @@ private:
   double seconds_ = 0;
   bsp::depth_order_tree<kernel, std::uint32_t> tree_;
   std::vector<box> boxes_; ///< of each interior node of `tree_`
+  std::vector<std::vector<std::array<double, 2>>> ring_doubles_; ///< each ring's vertices in double
+  std::vector<std::array<double, 4>> ring_boxes_;                 ///< each ring's box of them: xmin, ymin, xmax, ymax
 };
 
 /// The visibility region of `eye` among `scene`'s walls (one query: the
@@ -522,12 +583,13 @@ std::optional<std::vector<geometry::e2::point<FT>>> boundary(visibility_region<F
   auto put = [&](geometry::e2::point<FT> p) {
     if (out.empty() || !(out.back() == p)) out.push_back(std::move(p));
   };
+  wall_table<FT> walls(scene);
   for (auto const& a : region.arcs) {
     if (a.wall == behind_boundary) {
       put(region.eye);
       continue;
     }
-    auto w = scene.wall(static_cast<std::size_t>(a.wall));
+    auto w = walls(static_cast<std::size_t>(a.wall));
     if (a.whole) {
       // One wall all around: impossible for a segment, which subtends less than a half circle.
       throw std::logic_error("svm::boundary: one wall seen in every direction");
@@ -545,9 +607,10 @@ template <geometry::number FT> std::optional<FT> area(visibility_region<FT> cons
   if (!region.bounded()) return std::nullopt;
   FT twice(0);
   auto const& e = region.eye;
+  wall_table<FT> walls(scene);
   for (auto const& a : region.arcs) {
     if (a.wall == behind_boundary) continue;
-    auto w = scene.wall(static_cast<std::size_t>(a.wall));
+    auto w = walls(static_cast<std::size_t>(a.wall));
     auto p = hit_point(e, a.start(), w), q = hit_point(e, a.end(), w);
     twice += (p.x() - e.x()) * (q.y() - e.y()) - (p.y() - e.y()) * (q.x() - e.x());
   }

@@ -301,6 +301,34 @@ TEST_CASE("2D visibility regions agree with an exact ray caster on 220 scenes, a
   CHECK(wrong == 0);
 }
 
+TEST_CASE("Walls by number: the table and the visit in order give the ends that the rings and segments give", "[visibility2d]") {
+  svm::wall_scene<rational> s;
+  auto p = [](long x, long y) { return point(rational(x), rational(y)); };
+  s.rings = {{p(0, 0), p(4, 0), p(4, 4)}, {}, {p(1, 1), p(1, 2)}, {p(9, 9)}, {p(5, 5), p(6, 5), p(6, 6), p(5, 6)}};
+  s.segments = {{p(7, 0), p(8, 1)}, {p(-1, -1), p(-2, 3)}};
+  std::vector<std::array<point, 2>> expected = {
+      {p(0, 0), p(4, 0)}, {p(4, 0), p(4, 4)}, {p(4, 4), p(0, 0)}, // the triangle, closed
+      {p(1, 1), p(1, 2)}, {p(1, 2), p(1, 1)},                     // a two-vertex ring, after an empty one
+      {p(9, 9), p(9, 9)},                                         // one vertex: a wall of no length
+      {p(5, 5), p(6, 5)}, {p(6, 5), p(6, 6)}, {p(6, 6), p(5, 6)}, {p(5, 6), p(5, 5)},
+      {p(7, 0), p(8, 1)}, {p(-1, -1), p(-2, 3)}};
+  REQUIRE(s.wall_count() == expected.size());
+  svm::wall_table<rational> table(s);
+  std::size_t visited = 0;
+  s.for_each_wall([&](std::size_t i, point const& a, point const& b) {
+    REQUIRE(i == visited++);
+    CHECK(a == expected[i][0]);
+    CHECK(b == expected[i][1]);
+  });
+  CHECK(visited == expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    INFO("wall " << i);
+    CHECK(table(i) == expected[i]);
+    CHECK(s.wall(i) == expected[i]);
+  }
+  CHECK_THROWS_AS(table(expected.size()), std::out_of_range);
+}
+
 TEST_CASE("A convex room seen from inside, at a vertex or on an edge, is the whole room", "[visibility2d]") {
   using Q = rational;
   svm::wall_scene<Q> room;

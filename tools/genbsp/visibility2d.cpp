@@ -78,8 +78,7 @@ std::string svg_of(walls const& s, std::vector<point2> const& boundary, point2 c
     double x = p.x().convert_to<double>(), y = p.y().convert_to<double>();
     x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
   };
-  for (std::size_t i = 0; i < s.wall_count(); ++i)
-    for (auto const& p : s.wall(i)) grow(p);
+  s.for_each_wall([&](std::size_t, point2 const& a, point2 const& b) { grow(a), grow(b); });
   for (auto const& p : boundary) grow(p);
   double w = std::max(x1 - x0, 1e-9), h = std::max(y1 - y0, 1e-9), width = 800, scale = (width - 20) / w, height = h * scale + 20;
   auto px = [&](point2 const& p) {
@@ -93,13 +92,12 @@ std::string svg_of(walls const& s, std::vector<point2> const& boundary, point2 c
   o << "<path id=\"visible\" fill=\"#f3d36b\" fill-opacity=\"0.8\" stroke=\"#b08a10\" stroke-width=\"1\" d=\"";
   for (std::size_t i = 0; i < boundary.size(); ++i) o << (i ? " L" : "M") << px(boundary[i]);
   o << (boundary.empty() ? "" : " Z") << "\"/>\n<g id=\"walls\" stroke=\"#222\" stroke-width=\"2\" stroke-linecap=\"round\">\n";
-  for (std::size_t i = 0; i < s.wall_count(); ++i) {
-    auto w2 = s.wall(i);
-    auto a = px(w2[0]), b = px(w2[1]);
+  s.for_each_wall([&](std::size_t, point2 const& p, point2 const& q) {
+    auto a = px(p), b = px(q);
     auto ca = a.find(','), cb = b.find(',');
     o << "<line x1=\"" << a.substr(0, ca) << "\" y1=\"" << a.substr(ca + 1) << "\" x2=\"" << b.substr(0, cb) << "\" y2=\""
       << b.substr(cb + 1) << "\"/>\n";
-  }
+  });
   auto e = px(eye);
   auto ce = e.find(',');
   o << "</g>\n<circle id=\"eye\" cx=\"" << e.substr(0, ce) << "\" cy=\"" << e.substr(ce + 1) << "\" r=\"4\" fill=\"#c0392b\"/>\n</svg>\n";
@@ -194,8 +192,7 @@ void visibility2d_job::run() const {
     rational x0 = os[0].x(), x1 = os[0].x(), y0 = os[0].y(), y1 = os[0].y();
     auto grow = [&](point2 const& p) { x0 = std::min(x0, p.x()), x1 = std::max(x1, p.x()), y0 = std::min(y0, p.y()), y1 = std::max(y1, p.y()); };
     for (auto const& o : os) grow(o);
-    for (std::size_t i = 0; i < in.scene.wall_count(); ++i)
-      for (auto const& p : in.scene.wall(i)) grow(p);
+    in.scene.for_each_wall([&](std::size_t, point2 const& a, point2 const& b) { grow(a), grow(b); });
     rational m = std::max({x1 - x0, y1 - y0, rational(1)}) / 2;
     add_box(x0 - m, y0 - m, x1 + m, y1 + m);
     box_json = {(x0 - m).convert_to<double>(), (y0 - m).convert_to<double>(), (x1 + m).convert_to<double>(), (y1 + m).convert_to<double>()};
@@ -226,9 +223,10 @@ void visibility2d_job::run() const {
       ring.push_back({p.x().convert_to<double>(), p.y().convert_to<double>()});
     }
     json pieces = json::array();
+    svm::wall_table<rational> walls(in.scene);
     for (auto const& a : regions[k].arcs) {
       if (a.wall < 0) continue;
-      auto w = in.scene.wall(static_cast<std::size_t>(a.wall));
+      auto w = walls(static_cast<std::size_t>(a.wall));
       auto p = svm::hit_point(o, a.start(), w), q = svm::hit_point(o, a.end(), w);
       pieces.push_back({{"wall", in.names[static_cast<std::size_t>(a.wall)]},
                         {"from", {p.x().convert_to<double>(), p.y().convert_to<double>()}},
