@@ -9,6 +9,7 @@
 #include <cmath>
 #include <concepts>
 #include <cstddef>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -87,11 +88,11 @@ inline integer decimal_integer(std::string_view digits) {
 /// `[+-]digits[.digits]` with at most 18 digits in all, as a numerator and
 /// a power of ten in machine words; `false` for anything else (exponents,
 /// fractions, longer numbers, bad text), which `parse_rational` then reads.
-inline bool short_decimal(std::string_view text, long& numerator, long& denominator) noexcept {
+inline bool short_decimal(std::string_view text, std::int64_t& numerator, std::int64_t& denominator) noexcept {
   std::size_t i = 0;
   bool negative = false;
   if (i < text.size() && (text[i] == '+' || text[i] == '-')) negative = text[i++] == '-';
-  long n = 0, d = 1;
+  std::int64_t n = 0, d = 1; // below 10^18 < 2^63
   std::size_t digits = 0;
   bool point = false;
   for (; i < text.size(); ++i) {
@@ -116,7 +117,7 @@ inline bool short_decimal(std::string_view text, long& numerator, long& denomina
 inline rational parse_rational(std::string_view text) {
   // Integers and short decimals, the common coordinates, without GMP's text
   // conversion (a mesh's reading was mostly that).
-  if (long n = 0, d = 1; short_decimal(text, n, d)) return d == 1 ? rational(n) : rational(n, d);
+  if (std::int64_t n = 0, d = 1; short_decimal(text, n, d)) return d == 1 ? rational(n) : rational(n, d);
   auto fail = [&](char const* why) -> rational {
     throw parse_error("not a number '" + std::string(text) + "': " + why);
   };

@@ -223,10 +223,10 @@ void visibility2d_job::run() const {
       ring.push_back({p.x().convert_to<double>(), p.y().convert_to<double>()});
     }
     json pieces = json::array();
-    svm::wall_table<rational> walls(in.scene);
+    svm::wall_table<rational> table(in.scene);
     for (auto const& a : regions[k].arcs) {
       if (a.wall < 0) continue;
-      auto w = walls(static_cast<std::size_t>(a.wall));
+      auto w = table(static_cast<std::size_t>(a.wall));
       auto p = svm::hit_point(o, a.start(), w), q = svm::hit_point(o, a.end(), w);
       pieces.push_back({{"wall", in.names[static_cast<std::size_t>(a.wall)]},
                         {"from", {p.x().convert_to<double>(), p.y().convert_to<double>()}},
