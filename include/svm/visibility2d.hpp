@@ -32,6 +32,7 @@
 #include <array>
 #include <chrono>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <vector>
@@ -248,14 +249,12 @@ public:
     // test of where the eye lies on the rings (`blocked`).
     for (auto const& r : scene_.rings) {
       auto& ds = ring_doubles_.emplace_back();
-      std::array<double, 4> box{0, 0, 0, 0};
+      double const inf = std::numeric_limits<double>::infinity();
+      auto& box = ring_boxes_.emplace_back(std::array<double, 4>{inf, inf, -inf, -inf}); // an empty ring holds no eye
       for (auto const& p : r) {
-        std::array<double, 2> d{geometry::to_double(p.x()), geometry::to_double(p.y())};
-        if (ds.empty()) box = {d[0], d[1], d[0], d[1]};
+        auto const& d = ds.emplace_back(std::array<double, 2>{geometry::to_double(p.x()), geometry::to_double(p.y())});
         box = {std::min(box[0], d[0]), std::min(box[1], d[1]), std::max(box[2], d[0]), std::max(box[3], d[1])};
-        ds.push_back(d);
       }
-      ring_boxes_.push_back(box);
     }
     walls_ = input.size();
     tree_ = bsp::build_depth_order<kernel>(std::move(input), bsp::few_splits(no_cut{}, seed_));
