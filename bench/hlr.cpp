@@ -217,21 +217,29 @@ int main(int argc, char** argv) {
     std::vector<std::vector<vec3>> scene;
     vec3 lo{HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
     std::vector<svm::polygon<Q>> polys;
+    std::array<Q, 3> lo_q{}, hi_q{};
+    bool any = false;
     for (auto const& p : prepared.polygons) {
       std::vector<vec3> q;
       for (auto const& v : p.vertices) {
         vec3 d{v.x().convert_to<double>(), v.y().convert_to<double>(), v.z().convert_to<double>()};
-        for (std::size_t k = 0; k < 3; ++k) lo[k] = std::min(lo[k], d[k]), hi[k] = std::max(hi[k], d[k]);
+        for (std::size_t k = 0; k < 3; ++k) {
+          lo[k] = std::min(lo[k], d[k]), hi[k] = std::max(hi[k], d[k]);
+          if (!any || v[k] < lo_q[k]) lo_q[k] = v[k];
+          if (!any || v[k] > hi_q[k]) hi_q[k] = v[k];
+        }
+        any = true;
         q.push_back(d);
       }
       scene.push_back(std::move(q));
       polys.push_back({p.vertices, static_cast<std::uint32_t>(polys.size())});
     }
     if (polys.empty()) throw std::invalid_argument(path + ": no polygons");
-    vec3 centre{(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2};
-    // The parallel view along `dir`, about the bounding box's centre (a
-    // double, so an exact rational), as `genbsp render --dir` makes it.
-    svm::view_from_infinity<Q> view(polys, {-dir_q[0], -dir_q[1], -dir_q[2]}, geometry::e3::point<Q>(Q(centre[0]), Q(centre[1]), Q(centre[2])));
+    // The parallel view along `dir`, about the exact centre of the bounding
+    // box, as `genbsp render --dir` makes it.
+    geometry::e3::point<Q> centre((lo_q[0] + hi_q[0]) / 2, (lo_q[1] + hi_q[1]) / 2, (lo_q[2] + hi_q[2]) / 2);
+    svm::view_from_infinity<Q> view(polys, {-dir_q[0], -dir_q[1], -dir_q[2]}, centre);
+    vec3 centre_d{centre.x().convert_to<double>(), centre.y().convert_to<double>(), centre.z().convert_to<double>()};
     vec3 up{0, 0, 1};
     if (std::abs(dir[2]) > (1 - 1e-9) * std::hypot(dir[0], dir[1], dir[2])) up = {0, 1, 0};
     double extent = 1.05 * std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
@@ -287,7 +295,7 @@ int main(int argc, char** argv) {
     // The projector: parallel, its plane through the centre, its axes the
     // image's right and up, the view along −Z.
     auto r = pr.right();
-    gp_Ax2 frame(gp_Pnt(centre[0], centre[1], centre[2]), gp_Dir(-dir[0], -dir[1], -dir[2]), gp_Dir(r[0], r[1], r[2]));
+    gp_Ax2 frame(gp_Pnt(centre_d[0], centre_d[1], centre_d[2]), gp_Dir(-dir[0], -dir[1], -dir[2]), gp_Dir(r[0], r[1], r[2]));
     HLRAlgo_Projector projector(frame);
     // The projector's image coordinates to genbsp's pixels.
     double ppu = size / extent;
@@ -295,7 +303,7 @@ int main(int argc, char** argv) {
     // The polygonal algorithm's lines, and `Project`, are in a frame whose
     // origin is where the centre projects, not at 0 as the exact one's.
     gp_Pnt2d origin;
-    projector.Project(gp_Pnt(centre[0], centre[1], centre[2]), origin);
+    projector.Project(gp_Pnt(centre_d[0], centre_d[1], centre_d[2]), origin);
     auto to_pixel_poly = [&](double x, double y) { return to_pixel(x - origin.X(), y - origin.Y()); };
     // Check the correspondence on the scene's vertices: OCCT's projection
     // against genbsp's camera at the image of the vertex.

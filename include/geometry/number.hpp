@@ -58,7 +58,7 @@ constexpr sign operator*(sign a, sign b) noexcept {
 
 /// The sign of a number.
 template <number T> sign sign_of(T const& x) {
-  if constexpr (std::is_same_v<T, rational>)
+  if constexpr (std::is_same_v<T, rational> || std::is_same_v<T, integer>)
     return to_sign(x.sign());
   else
     return x < T(0) ? sign::negative : (T(0) < x ? sign::positive : sign::zero);

@@ -29,8 +29,11 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <numbers>
+#include <optional>
+#include <type_traits>
 #include <string_view>
 #include <utility>
 #include <vector>
@@ -122,21 +125,158 @@ template <class FT> v3<FT> minus(v3<FT> const& p, v3<FT> const& q) { return {p[0
 template <class FT> int sgn(FT const& x) { return static_cast<int>(geometry::sign_of(x)); }
 template <class FT> bool is_zero3(v3<FT> const& v) { return sgn(v[0]) == 0 && sgn(v[1]) == 0 && sgn(v[2]) == 0; }
 
-/// A polygon's plane relative to the eye: `n · (x − O) + d`, with `x − O`
-/// given; positive on the polygon's front.
+/// The integers the lines are computed on: over an exact field, GMP
+/// integers (no rational is normalised on the way), over `double` doubles.
+template <class FT> using frame_int = std::conditional_t<geometry::exact_field<FT>, geometry::integer, FT>;
+template <class FT> using iv3 = v3<frame_int<FT>>;
+
+/// A point relative to the eye: x − O = p / w, with w > 0 (over `double`,
+/// w = 1).  Every test below is a sign of an expression homogeneous in each
+/// such point, or a ratio of two of them, so positive factors drop out.
+template <class FT> struct eye_relative {
+  iv3<FT> p;
+  frame_int<FT> w;
+};
+
+template <class FT> eye_relative<FT> relative(geometry::e3::point<FT> const& x, geometry::e3::point<FT> const& eye) {
+  auto d = minus(x, eye);
+  if constexpr (geometry::exact_field<FT>) {
+    eye_relative<FT> r;
+    r.w = 1;
+    for (auto const& c : d) {
+      auto const* den = mpq_denref(c.backend().data());
+      if (mpz_cmp_ui(den, 1) != 0) mpz_lcm(r.w.backend().data(), r.w.backend().data(), den);
+    }
+    for (std::size_t k = 0; k < 3; ++k) {
+      auto const* q = d[k].backend().data();
+      mpz_divexact(r.p[k].backend().data(), r.w.backend().data(), mpq_denref(q));
+      mpz_mul(r.p[k].backend().data(), r.p[k].backend().data(), mpq_numref(q));
+    }
+    return r;
+  } else {
+    return {d, FT(1)};
+  }
+}
+
+/// A positive multiple of b − a.
+template <class FT> iv3<FT> difference(eye_relative<FT> const& b, eye_relative<FT> const& a) {
+  iv3<FT> r;
+  for (std::size_t k = 0; k < 3; ++k) r[k] = b.p[k] * a.w - a.p[k] * b.w;
+  return r;
+}
+
+/// num / den in the field (den ≠ 0).
+template <class FT> FT ratio(frame_int<FT> const& num, frame_int<FT> const& den) {
+  if constexpr (geometry::exact_field<FT>) {
+    FT r;
+    mpq_set_num(r.backend().data(), num.backend().data());
+    mpq_set_den(r.backend().data(), den.backend().data());
+    mpq_canonicalize(r.backend().data());
+    return r;
+  } else {
+    return num / den;
+  }
+}
+
+template <class FT> v3<FT> to_field(iv3<FT> const& v) {
+  if constexpr (geometry::exact_field<FT>) return {FT(v[0]), FT(v[1]), FT(v[2])};
+  else return v;
+}
+
+/// A positive multiple of `v` in doubles, scaled so that no coordinate
+/// overflows (for angles only).
+template <class FT> v3<double> direction_doubles(iv3<FT> const& v) {
+  if constexpr (geometry::exact_field<FT>) {
+    std::array<double, 3> m{};
+    std::array<long, 3> e{};
+    long top = std::numeric_limits<long>::min();
+    for (std::size_t k = 0; k < 3; ++k) {
+      m[k] = mpz_get_d_2exp(&e[k], v[k].backend().data());
+      if (m[k] != 0) top = std::max(top, e[k]);
+    }
+    v3<double> r{};
+    for (std::size_t k = 0; k < 3; ++k)
+      if (m[k] != 0) r[k] = std::ldexp(m[k], static_cast<int>(std::max(e[k] - top, -1000L)));
+    return r;
+  } else {
+    return v;
+  }
+}
+
+/// A positive multiple of A + t·BA.
+template <class FT> iv3<FT> point_at(iv3<FT> const& A, iv3<FT> const& BA, FT const& t) {
+  if constexpr (geometry::exact_field<FT>) {
+    // t = p / q with q > 0: q·A + p·BA.
+    geometry::integer p(mpq_numref(t.backend().data())), q(mpq_denref(t.backend().data()));
+    iv3<FT> r;
+    for (std::size_t k = 0; k < 3; ++k) r[k] = q * A[k] + p * BA[k];
+    return r;
+  } else {
+    return {A[0] + t * BA[0], A[1] + t * BA[1], A[2] + t * BA[2]};
+  }
+}
+
+/// An edge a → b relative to the eye on one scale: a − O = A / L and
+/// b − O = B / L, so that A + t·(B − A) is L times the edge's point of
+/// parameter t.
+template <class FT> struct edge_frame {
+  iv3<FT> A, B;
+  frame_int<FT> L;
+  edge_frame(eye_relative<FT> const& ra, eye_relative<FT> const& rb) : A(ra.p), B(rb.p), L(ra.w * rb.w) {
+    for (auto& x : A) x *= rb.w;
+    for (auto& x : B) x *= ra.w;
+  }
+};
+
+/// The integer coordinates of a map vector (a positive multiple of it).
+template <class FT> iv3<FT> const& integers_of(geometry::hvec<FT, 3> const& v) {
+  if constexpr (geometry::exact_field<FT>) return v.integers();
+  else return v.exact();
+}
+
+/// The direction of `v` as a point of the sphere.
+template <class FT> geometry::s2::point<FT> direction_of(iv3<FT> v) {
+  if constexpr (geometry::exact_field<FT>) {
+    geometry::detail::make_primitive(v);
+    return geometry::s2::point<FT>::from_integers(geometry::detail::integer_vector<3>(std::move(v)));
+  } else {
+    return geometry::s2::point<FT>(v);
+  }
+}
+
+/// A polygon's plane relative to the eye, up to a positive factor: its value
+/// at x − O = p / w is (n · p + d·w) / w; positive on the polygon's front,
+/// `d` its value at the eye.
 template <class FT> struct eye_plane {
-  v3<FT> n;
-  FT d; ///< the plane's value at the eye
-  FT at(v3<FT> const& x) const { return geometry::dot(n, x) + d; }
+  iv3<FT> n;
+  frame_int<FT> d;
+  /// A positive multiple of the plane's value at `x`.
+  frame_int<FT> at(eye_relative<FT> const& x) const { return geometry::dot(n, x.p) + d * x.w; }
 };
 
 /// (From the first vertex and two others not on a line with it: a polygon
-/// may have vertices in the middle of its sides.)
-template <class FT> eye_plane<FT> plane_of(polygon<FT> const& p, geometry::e3::point<FT> const& eye) {
-  auto a = minus(p.vertices[0], eye), b = minus(p.vertices[1], eye);
-  v3<FT> n{};
-  for (std::size_t k = 2; k < p.vertices.size() && is_zero3(n); ++k) n = geometry::cross(minus(b, a), minus(minus(p.vertices[k], eye), a));
-  return {n, -geometry::dot(n, a)};
+/// may have vertices in the middle of its sides.)  `v` are the polygon's
+/// vertices relative to the eye.
+template <class FT> eye_plane<FT> plane_of(std::vector<eye_relative<FT>> const& v) {
+  auto u = difference(v[1], v[0]);
+  iv3<FT> n{};
+  for (std::size_t k = 2; k < v.size() && is_zero3(n); ++k) n = geometry::cross(u, difference(v[k], v[0]));
+  // n·(x − a) with a = p0 / w0, times w0.
+  eye_plane<FT> r{n, -geometry::dot(n, v[0].p)};
+  for (auto& x : r.n) x *= v[0].w;
+  if constexpr (geometry::exact_field<FT>) {
+    std::array<geometry::integer, 4> z{r.n[0], r.n[1], r.n[2], r.d};
+    geometry::detail::make_primitive(z);
+    r = {{z[0], z[1], z[2]}, z[3]};
+  }
+  return r;
+}
+
+template <class FT> std::vector<eye_relative<FT>> relative_vertices(polygon<FT> const& p, geometry::e3::point<FT> const& eye) {
+  std::vector<eye_relative<FT>> r;
+  r.reserve(p.vertices.size());
+  for (auto const& v : p.vertices) r.push_back(relative(v, eye));
+  return r;
 }
 
 /// The line through the eye's plane `n` up to scale and orientation, as a
@@ -247,40 +387,44 @@ template <geometry::number FT> std::vector<scene_edge<FT>> scene_edges(std::vect
 
 namespace detail {
 
-/// `kind_of`, given the edge's ends from the eye, `A` and `B`, their cross
-/// product `n`, and the polygons' planes.
+/// `kind_of`, given the edge's ends relative to the eye `ra` and `rb`, the
+/// normal `n` of its plane through the eye (a positive multiple of
+/// (a − O) × (b − O)), the polygons' vertices relative to the eye (`rel`,
+/// indexed as `polygons`) and their planes.
 template <geometry::number FT>
-edge_kind kind_from(scene_edge<FT> const& e, std::vector<polygon<FT>> const& polygons, geometry::e3::point<FT> const& eye, line_options const& o,
-                    std::vector<eye_plane<FT>> const& planes, v3<FT> const& A, v3<FT> const& B, v3<FT> const& n) {
+edge_kind kind_from(scene_edge<FT> const& e, std::vector<polygon<FT>> const& polygons, line_options const& o,
+                    std::vector<eye_plane<FT>> const& planes, std::vector<std::vector<eye_relative<FT>>> const& rel,
+                    eye_relative<FT> const& ra, eye_relative<FT> const& rb, iv3<FT> const& n) {
   if (e.polygons.size() == 1) return edge_kind::boundary;
   if (e.polygons.size() > 2) return edge_kind::crease;
+  auto E = difference(rb, ra);
   // A vertex of each polygon off the edge's line: where the edge is a whole
   // side, any other vertex (the polygon is strictly convex); where it is
   // part of a side (a T-junction), one not on its line.
-  auto off = [&](polygon<FT> const& p) -> geometry::e3::point<FT> const& {
+  auto off = [&](std::uint32_t pi) -> eye_relative<FT> const& {
+    auto const& p = polygons[pi];
     int ends = 0;
     for (auto const& v : p.vertices) ends += (v == e.a) + (v == e.b);
-    for (auto const& v : p.vertices)
-      if (!(v == e.a) && !(v == e.b) && (ends == 2 || !is_zero3(geometry::cross(minus(e.b, e.a), minus(v, e.a))))) return v;
-    return p.vertices[0];
+    for (std::size_t k = 0; k < p.vertices.size(); ++k) {
+      auto const& v = p.vertices[k];
+      if (!(v == e.a) && !(v == e.b) && (ends == 2 || !is_zero3(geometry::cross(E, difference(rel[pi][k], ra))))) return rel[pi][k];
+    }
+    return rel[pi][0];
   };
-  auto const &p = polygons[e.polygons[0]], &q = polygons[e.polygons[1]];
-  auto cp = minus(off(p), eye), cq = minus(off(q), eye);
-  int sp = sgn(geometry::dot(n, cp)), sq = sgn(geometry::dot(n, cq));
+  auto const &cp = off(e.polygons[0]), &cq = off(e.polygons[1]);
+  int sp = sgn(geometry::dot(n, cp.p)), sq = sgn(geometry::dot(n, cq.p));
   bool coplanar = sgn(planes[e.polygons[0]].at(cq)) == 0;
+  auto up = difference(cp, ra), uq = difference(cq, ra);
   // Both polygons on one side of the edge in the view: the surface folds there.
   if (sp == 0 || sq == 0 || sp == sq) {
     // A flat pair seen exactly edge-on is still a diagonal.
-    if (coplanar && sp == 0 && sq == 0) {
-      auto E = minus(B, A);
-      if (sgn(geometry::dot(geometry::cross(E, minus(cp, A)), geometry::cross(E, minus(cq, A)))) < 0) return edge_kind::never;
-    }
+    if (coplanar && sp == 0 && sq == 0)
+      if (sgn(geometry::dot(geometry::cross(E, up), geometry::cross(E, uq))) < 0) return edge_kind::never;
     return edge_kind::silhouette;
   }
   if (coplanar) return edge_kind::never;
   if (o.crease <= 0) return edge_kind::crease;
-  auto d = [](v3<FT> const& x) { return v3<double>{to_double(x[0]), to_double(x[1]), to_double(x[2])}; };
-  double b = bend(d(minus(B, A)), d(minus(cp, A)), d(minus(cq, A)));
+  double b = bend(direction_doubles<FT>(E), direction_doubles<FT>(up), direction_doubles<FT>(uq));
   return b > o.crease * std::numbers::pi / 180 ? edge_kind::crease : edge_kind::smooth;
 }
 
@@ -291,12 +435,15 @@ template <geometry::number FT>
 edge_kind kind_of(scene_edge<FT> const& e, std::vector<polygon<FT>> const& polygons, geometry::e3::point<FT> const& eye, line_options const& o) {
   using namespace detail;
   std::vector<eye_plane<FT>> planes;
+  std::vector<std::vector<eye_relative<FT>>> rel;
   for (auto i : e.polygons) {
-    if (planes.size() <= i) planes.resize(i + 1);
-    planes[i] = plane_of(polygons[i], eye);
+    if (planes.size() <= i) planes.resize(i + 1), rel.resize(i + 1);
+    rel[i] = relative_vertices(polygons[i], eye);
+    planes[i] = plane_of(rel[i]);
   }
-  auto A = minus(e.a, eye), B = minus(e.b, eye);
-  return kind_from(e, polygons, eye, o, planes, A, B, geometry::cross(A, B));
+  auto ra = relative(e.a, eye), rb = relative(e.b, eye);
+  edge_frame<FT> f(ra, rb);
+  return kind_from(e, polygons, o, planes, rel, ra, rb, geometry::cross(f.A, f.B));
 }
 
 /// The visible and hidden lines of `polygons` seen from `eye`, from their map
@@ -315,13 +462,27 @@ line_set<FT> hidden_lines(visibility_map<FT> const& vm, geometry::e3::point<FT> 
   out.stats.edges = out.edges.size();
   auto const& m = vm.map;
 
+  // Every vertex relative to the eye, on integers (see `eye_relative`).
+  std::vector<std::vector<eye_relative<FT>>> rel;
   std::vector<eye_plane<FT>> planes;
+  rel.reserve(polygons.size());
   planes.reserve(polygons.size());
-  for (auto const& p : polygons) planes.push_back(plane_of(p, eye));
+  for (auto const& p : polygons) {
+    rel.push_back(relative_vertices(p, eye));
+    planes.push_back(plane_of(rel.back()));
+  }
+  // The edges' ends, by welded vertex number, made when first needed.
+  std::size_t welded = 0;
+  for (auto const& e : out.edges) welded = std::max<std::size_t>({welded, e.va + std::size_t{1}, e.vb + std::size_t{1}});
+  std::vector<std::optional<eye_relative<FT>>> welded_rel(welded);
+  auto rel_of = [&](std::uint32_t id, geometry::e3::point<FT> const& x) -> eye_relative<FT> const& {
+    if (!welded_rel[id]) welded_rel[id] = relative(x, eye);
+    return *welded_rel[id];
+  };
   // Polygons seen edge-on, by the line of their plane.
   std::map<v3<FT>, std::vector<std::uint32_t>> edge_on;
   for (std::uint32_t i = 0; i < polygons.size(); ++i)
-    if (sgn(planes[i].d) == 0) edge_on[line_key(planes[i].n)].push_back(i);
+    if (sgn(planes[i].d) == 0) edge_on[line_key(to_field<FT>(planes[i].n))].push_back(i);
 
   auto label_at = [&](index face) -> std::int64_t {
     std::int64_t l = m.faces()[face].label;
@@ -340,16 +501,21 @@ line_set<FT> hidden_lines(visibility_map<FT> const& vm, geometry::e3::point<FT> 
   // edge's runs.
   struct along {
     std::int64_t q;
-    FT fa, df, zero;
-    int sign_df, sign_eye;
+    FT zero;
+    int sign_fa, sign_df, sign_eye;
   };
   std::vector<along> sides;
   out.kinds.reserve(out.edges.size());
   for (std::uint32_t ei = 0; ei < out.edges.size(); ++ei) {
     auto const& e = out.edges[ei];
-    auto A = minus(e.a, eye), B = minus(e.b, eye);
+    // The edge's ends relative to the eye, a − O = A / L and b − O = B / L:
+    // the points A + t·(B − A) are L times those of the edge, t the same.
+    auto const &ra = rel_of(e.va, e.a), &rb = rel_of(e.vb, e.b);
+    edge_frame<FT> f(ra, rb);
+    auto const &A = f.A, &B = f.B;
+    auto const& L = f.L;
     auto n = geometry::cross(A, B);
-    auto kind = kind_from(e, polygons, eye, o, planes, A, B, n);
+    auto kind = kind_from(e, polygons, o, planes, rel, ra, rb, n);
     out.kinds.push_back(kind);
     if (is_zero3(n)) {
       ++out.stats.edges_through_eye;
@@ -358,19 +524,19 @@ line_set<FT> hidden_lines(visibility_map<FT> const& vm, geometry::e3::point<FT> 
     if (kind == edge_kind::never) continue;
     auto BA = minus(B, A);
     // The parameter along the edge where a circle through the eye meets it.
-    auto t_at = [&](v3<FT> const& c) { return FT(-geometry::dot(c, A) / geometry::dot(c, BA)); };
+    auto t_at = [&](iv3<FT> const& c) { return ratio<FT>(-geometry::dot(c, A), geometry::dot(c, BA)); };
 
     // Pieces with the faces on their two sides.
     runs.clear();
     below.clear();
-    S arc = geometry::s2::arc(geometry::s2::point<FT>(A), geometry::s2::point<FT>(B));
+    S arc = geometry::s2::arc(direction_of<FT>(A), direction_of<FT>(B));
     bsp::detail::push_down(vm.locator, std::move(arc), vm.locator.root(), -1, below);
     for (auto& [piece, right] : below) {
       across.clear();
       bsp::detail::push_down(vm.locator, std::move(piece), vm.locator.root(), +1, across);
       for (auto& [p, left] : across) {
         if (p.bounds.size() != 2) continue;
-        FT t0 = t_at(p.bounds.front().original.n.exact()), t1 = t_at(p.bounds.back().original.n.exact());
+        FT t0 = t_at(integers_of(p.bounds.front().original.n)), t1 = t_at(integers_of(p.bounds.back().original.n));
         if (t1 < t0) std::swap(t0, t1);
         if (!(t0 < t1)) continue;
         runs.push_back({std::move(t0), std::move(t1), {label_at(right), label_at(left)}});
@@ -382,13 +548,22 @@ line_set<FT> hidden_lines(visibility_map<FT> const& vm, geometry::e3::point<FT> 
     // Polygons seen edge-on in the plane of the edge and the eye.
     std::vector<std::uint32_t> const* flat = nullptr;
     if (!edge_on.empty())
-      if (auto it = edge_on.find(line_key(n)); it != edge_on.end()) flat = &it->second, ++out.stats.edge_on_tests;
+      if (auto it = edge_on.find(line_key(to_field<FT>(n))); it != edge_on.end()) flat = &it->second, ++out.stats.edge_on_tests;
     auto incident = [&](std::int64_t q) { return std::find(e.polygons.begin(), e.polygons.end(), static_cast<std::uint32_t>(q)) != e.polygons.end(); };
-    auto x_at = [&](FT const& t) { return v3<FT>{A[0] + t * BA[0], A[1] + t * BA[1], A[2] + t * BA[2]}; };
+    // Against edge-on polygons (rare), in the field: the edge's ends and
+    // points relative to the eye.
+    v3<FT> Af, BAf, nf;
+    if (flat) {
+      Af = minus(e.a, eye);
+      auto Bf = minus(e.b, eye);
+      BAf = minus(Bf, Af);
+      nf = geometry::cross(Af, Bf);
+    }
+    auto x_at = [&](FT const& t) { return v3<FT>{Af[0] + t * BAf[0], Af[1] + t * BAf[1], Af[2] + t * BAf[2]}; };
     // Whether the open segment from the eye to x meets edge-on polygon g.
     auto blocks = [&](std::uint32_t g, v3<FT> const& x) {
       auto const& v = polygons[g].vertices;
-      auto const& N = planes[g].n;
+      auto const N = to_field<FT>(planes[g].n);
       FT lo(0), hi(1);
       for (std::size_t k = 0; k < v.size(); ++k) {
         auto gk = minus(v[k], eye), gl = minus(v[(k + 1) % v.size()], eye);
@@ -409,10 +584,12 @@ line_set<FT> hidden_lines(visibility_map<FT> const& vm, geometry::e3::point<FT> 
     auto along_of = [&](std::int64_t q) -> along const& {
       for (auto const& s : sides)
         if (s.q == q) return s;
-      FT fa = planes[q].at(A), df = planes[q].at(B) - fa;
+      // L times the plane's value at a, and its change from a to b.
+      auto const& pl = planes[q];
+      frame_int<FT> fa = geometry::dot(pl.n, A) + pl.d * L, df = geometry::dot(pl.n, BA);
       int sd = sgn(df);
-      FT zero = sd == 0 ? FT(0) : FT(-fa / df);
-      sides.push_back({q, std::move(fa), std::move(df), std::move(zero), sd, sgn(planes[q].d)});
+      FT zero = sd == 0 ? FT(0) : ratio<FT>(-fa, df);
+      sides.push_back({q, std::move(zero), sgn(fa), sd, sgn(pl.d)});
       return sides.back();
     };
     // Hidden on the open interval (t0, t1), which no cut is inside: a side's
@@ -423,7 +600,7 @@ line_set<FT> hidden_lines(visibility_map<FT> const& vm, geometry::e3::point<FT> 
       for (auto q : r.side) {
         if (q < 0) continue;
         auto const& s = along_of(q);
-        int sign = s.sign_df == 0 ? sgn(s.fa) : (t0 < s.zero ? -s.sign_df : s.sign_df);
+        int sign = s.sign_df == 0 ? s.sign_fa : (t0 < s.zero ? -s.sign_df : s.sign_df);
         if (sign == -s.sign_eye) return true;
       }
       if (flat) {
@@ -448,9 +625,9 @@ line_set<FT> hidden_lines(visibility_map<FT> const& vm, geometry::e3::point<FT> 
         for (auto g : *flat)
           for (auto const& vtx : polygons[g].vertices) {
             auto gv = minus(vtx, eye);
-            auto c = geometry::cross(n, gv); // a circle through the vertex's direction
-            if (sgn(geometry::dot(c, BA)) == 0) continue;
-            FT t = t_at(c);
+            auto c = geometry::cross(nf, gv); // a circle through the vertex's direction
+            if (sgn(geometry::dot(c, BAf)) == 0) continue;
+            FT t = FT(-geometry::dot(c, Af) / geometry::dot(c, BAf));
             if (r.t0 < t && t < r.t1) cuts.push_back(t);
           }
       cuts.push_back(r.t1);
@@ -484,14 +661,15 @@ line_set<FT> hidden_lines(visibility_map<FT> const& vm, geometry::e3::point<FT> 
   // shadow boundaries (the same polygon on both sides, lit differently).
   // Whether map edge `he` lies on the side a–b of a polygon (its sides
   // whole: a run of scene edges cut at T-junctions may hold one map edge).
-  auto on_side = [&](index he, geometry::e3::point<FT> const& a, geometry::e3::point<FT> const& b) {
-    auto A = minus(a, eye), B = minus(b, eye);
+  // (Positive multiples of a − O, b − O and the map's vectors will do.)
+  auto on_side = [&](index he, iv3<FT> const& A, iv3<FT> const& B) {
     auto n = geometry::cross(A, B);
     if (is_zero3(n)) return false;
-    auto const c = m.circles()[m.half_edges()[he].circle].n.exact();
+    auto const& c = integers_of(m.circles()[m.half_edges()[he].circle].n);
     if (!is_zero3(geometry::cross(c, n))) return false;
     for (index v : {m.origin(he), m.target(he)}) {
-      auto const d = m.point(v).exact();
+      auto const point = m.point(v);
+      auto const& d = integers_of(point);
       if (sgn(geometry::dot(geometry::cross(A, d), n)) < 0 || sgn(geometry::dot(geometry::cross(d, B), n)) < 0) return false;
     }
     return true;
@@ -508,8 +686,8 @@ line_set<FT> hidden_lines(visibility_map<FT> const& vm, geometry::e3::point<FT> 
     bool known = false;
     for (auto p : {pa, pb}) {
       if (p < 0 || known) continue;
-      auto const& v = polygons[static_cast<std::size_t>(p)].vertices;
-      for (std::size_t k = 0; k < v.size() && !known; ++k) known = on_side(h, v[k], v[(k + 1) % v.size()]);
+      auto const& v = rel[static_cast<std::size_t>(p)];
+      for (std::size_t k = 0; k < v.size() && !known; ++k) known = on_side(h, v[k].p, v[(k + 1) % v.size()].p);
     }
     if (!known) out.map_lines.push_back({h, line_class::intersection});
   }

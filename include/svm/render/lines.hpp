@@ -11,6 +11,7 @@
 #include "drawing.hpp"
 
 #include <array>
+#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -69,7 +70,6 @@ drawing draw_lines(line_set<FT> const& ls, visibility_map<FT> const& vm, geometr
                    line_drawing_options const& o, line_drawing_summary* summary = nullptr) {
   using namespace detail;
   using svm::detail::minus;
-  using svm::detail::to_double;
   drawing out;
   out.width = pr.cam().width;
   out.height = pr.cam().height;
@@ -84,19 +84,29 @@ drawing draw_lines(line_set<FT> const& ls, visibility_map<FT> const& vm, geometr
   for (auto& side : edge_seen)
     for (auto& v : side) v.assign(ls.edges.size(), 0);
   std::uint64_t unique = std::uint64_t{1} << 62;
-  auto unit_of = [](std::array<FT, 3> const& v) { return unit3(vec3{to_double(v[0]), to_double(v[1]), to_double(v[2])}); };
+  auto unit_of = [](svm::detail::iv3<FT> const& v) { return unit3(svm::detail::direction_doubles<FT>(v)); };
+  // The current edge relative to the eye, on integers (`edge_frame`).
+  std::optional<svm::detail::edge_frame<FT>> f;
+  svm::detail::iv3<FT> BA;
+  vec3 normal{};
+  std::uint32_t framed = std::numeric_limits<std::uint32_t>::max();
   for (auto const& p : ls.pieces) {
     auto const& e = ls.edges[p.edge];
     if (p.hidden && o.hidden == hidden_style::none) continue;
-    auto A = minus(e.a, eye), B = minus(e.b, eye), BA = svm::detail::minus(B, A);
-    auto at = [&](FT const& t) { return unit_of({A[0] + t * BA[0], A[1] + t * BA[1], A[2] + t * BA[2]}); };
+    if (p.edge != framed) {
+      framed = p.edge;
+      f.emplace(svm::detail::relative(e.a, eye), svm::detail::relative(e.b, eye));
+      BA = minus(f->B, f->A);
+      normal = unit_of(geometry::cross(f->A, f->B));
+    }
+    auto at = [&](FT const& t) { return unit_of(svm::detail::point_at(f->A, BA, t)); };
     auto key = [&](FT const& t) -> std::uint64_t {
       if (geometry::sign_of(t) == geometry::sign::zero) return e.va;
       if (t == FT(1)) return e.vb;
       return unique++;
     };
     auto c = static_cast<std::size_t>(p.cls);
-    pieces[p.hidden][c].push_back({key(p.t0), key(p.t1), arc_image(pr, at(p.t0), at(p.t1), o.tolerance), unit_of(geometry::cross(A, B))});
+    pieces[p.hidden][c].push_back({key(p.t0), key(p.t1), arc_image(pr, at(p.t0), at(p.t1), o.tolerance), normal});
     edge_seen[p.hidden][c][p.edge] = 1;
   }
   auto const& m = vm.map;
