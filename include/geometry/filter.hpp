@@ -256,6 +256,11 @@ public:
   exact_pair(std::array<rational, N> c, integer_vector<N> z)
       : z_(std::move(z)), c_(std::make_unique<std::array<rational, N>>(std::move(c))) {}
   explicit exact_pair(integer_vector<N> z) : z_(std::move(z)) {}
+  /// A point's homogeneous integer coordinates (the last positive): its
+  /// rational coordinates are these divided by the last, made when first
+  /// asked for.
+  struct point_tag {};
+  exact_pair(integer_vector<N> z, point_tag) : z_(std::move(z)), point_(true) {}
 
   integer_vector<N> const& integers(bool negated) const {
     if (!negated) return z_;
@@ -265,7 +270,13 @@ public:
   std::array<rational, N> const& rationals(bool negated) const {
     auto const& c = c_.get([this] {
       auto c = std::make_unique<std::array<rational, N>>();
-      for (std::size_t i = 0; i < N; ++i) mpq_set_z((*c)[i].backend().data(), z_.big()[i].backend().data());
+      auto const& z = z_.big();
+      for (std::size_t i = 0; i < N; ++i) mpq_set_z((*c)[i].backend().data(), z[i].backend().data());
+      if (point_)
+        for (std::size_t i = 0; i < N; ++i) {
+          if (i + 1 < N) mpq_div((*c)[i].backend().data(), (*c)[i].backend().data(), (*c)[N - 1].backend().data());
+          else mpq_set_ui((*c)[i].backend().data(), 1, 1);
+        }
       return c;
     });
     if (!negated) return c;
@@ -282,6 +293,7 @@ private:
   lazy_value<std::array<rational, N>> c_;
   lazy_value<integer_vector<N>> negative_z_;
   lazy_value<std::array<rational, N>> negative_c_;
+  bool point_ = false;
 };
 
 /// Divides `z` by the greatest common divisor of its entries (when not 0).
@@ -586,6 +598,19 @@ public:
     hvec r;
     detail::approximate(z, r.a_);
     r.s_ = std::make_shared<shared const>(std::move(z));
+    return r;
+  }
+
+  /// The point whose homogeneous integer coordinates are `z` (exact fields
+  /// only; the last coordinate positive, `z` primitive).  Unlike
+  /// `from_integers`, its rational coordinates are those of the point, `z`
+  /// divided by its last coordinate (made when first asked for).
+  static hvec from_point_integers(detail::integer_vector<N> z)
+    requires is_exact
+  {
+    hvec r;
+    detail::approximate(z, r.a_);
+    r.s_ = std::make_shared<shared const>(std::move(z), typename shared::point_tag{});
     return r;
   }
 

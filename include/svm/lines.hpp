@@ -22,6 +22,7 @@
 #include "build.hpp"
 
 #include <bsp/point_set.hpp>
+#include <geometry/hash.hpp>
 #include <geometry/linear.hpp>
 
 #include <algorithm>
@@ -34,6 +35,7 @@
 #include <numbers>
 #include <optional>
 #include <type_traits>
+#include <unordered_map>
 #include <string_view>
 #include <utility>
 #include <vector>
@@ -139,22 +141,16 @@ template <class FT> struct eye_relative {
 };
 
 template <class FT> eye_relative<FT> relative(geometry::e3::point<FT> const& x, geometry::e3::point<FT> const& eye) {
-  auto d = minus(x, eye);
   if constexpr (geometry::exact_field<FT>) {
+    // x = X / W and O = P / V (homogeneous integers, W, V > 0):
+    // x − O = (X·V − P·W) / (W·V).
+    auto const &z = x.homogeneous().integers(), &o = eye.homogeneous().integers();
     eye_relative<FT> r;
-    r.w = 1;
-    for (auto const& c : d) {
-      auto const* den = mpq_denref(c.backend().data());
-      if (mpz_cmp_ui(den, 1) != 0) mpz_lcm(r.w.backend().data(), r.w.backend().data(), den);
-    }
-    for (std::size_t k = 0; k < 3; ++k) {
-      auto const* q = d[k].backend().data();
-      mpz_divexact(r.p[k].backend().data(), r.w.backend().data(), mpq_denref(q));
-      mpz_mul(r.p[k].backend().data(), r.p[k].backend().data(), mpq_numref(q));
-    }
+    for (std::size_t k = 0; k < 3; ++k) r.p[k] = z[k] * o[3] - o[k] * z[3];
+    r.w = z[3] * o[3];
     return r;
   } else {
-    return {d, FT(1)};
+    return {minus(x, eye), FT(1)};
   }
 }
 
@@ -318,9 +314,15 @@ template <class FT> double to_double(FT const& x) {
 template <geometry::number FT> std::vector<scene_edge<FT>> scene_edges(std::vector<polygon<FT>> const& polygons) {
   using namespace detail;
   using key = std::array<FT, 3>;
-  std::map<key, std::uint32_t> ids;
+  // Vertices welded by their exact coordinates: over an exact field by their
+  // homogeneous integers (no rational is made).
+  auto ids = [] {
+    if constexpr (geometry::exact_field<FT>) return std::unordered_map<geometry::hvec<FT, 4>, std::uint32_t, geometry::hvec_hash>{};
+    else return std::map<key, std::uint32_t>{};
+  }();
   auto id = [&](geometry::e3::point<FT> const& p) {
-    return ids.try_emplace({p.x(), p.y(), p.z()}, static_cast<std::uint32_t>(ids.size())).first->second;
+    if constexpr (geometry::exact_field<FT>) return ids.try_emplace(p.homogeneous(), static_cast<std::uint32_t>(ids.size())).first->second;
+    else return ids.try_emplace({p.x(), p.y(), p.z()}, static_cast<std::uint32_t>(ids.size())).first->second;
   };
   // Sides welded by their ends.
   struct welded {
@@ -328,7 +330,7 @@ template <geometry::number FT> std::vector<scene_edge<FT>> scene_edges(std::vect
     std::uint32_t ia, ib;
     std::vector<std::uint32_t> polygons;
   };
-  std::map<std::pair<std::uint32_t, std::uint32_t>, std::size_t> at;
+  std::unordered_map<std::uint64_t, std::size_t> at; // by (ia, ib) in one word
   std::vector<welded> sides;
   for (std::uint32_t i = 0; i < polygons.size(); ++i) {
     auto const& v = polygons[i].vertices;
@@ -337,7 +339,7 @@ template <geometry::number FT> std::vector<scene_edge<FT>> scene_edges(std::vect
       std::uint32_t ia = id(*a), ib = id(*b);
       if (ia == ib) continue;
       if (ib < ia) std::swap(a, b), std::swap(ia, ib);
-      auto [it, fresh] = at.try_emplace({ia, ib}, sides.size());
+      auto [it, fresh] = at.try_emplace(std::uint64_t{ia} << 32 | ib, sides.size());
       if (fresh) sides.push_back({a, b, ia, ib, {i}});
       else if (sides[it->second].polygons.back() != i) sides[it->second].polygons.push_back(i);
     }

@@ -57,6 +57,25 @@ public:
       for (auto const& q : p.vertices) widen(q);
     for (auto const& q : also) widen(q);
     s_ = FT(2) * m + FT(1);
+    if constexpr (geometry::exact_field<FT>) {
+      // c = C / K, e = E / Ke, s = S / Ks on integers, for `image`.
+      auto const& cz = c_.homogeneous().integers();
+      ints_.C = {cz[0], cz[1], cz[2]};
+      ints_.K = cz[3];
+      geometry::integer ke(1);
+      for (auto const& x : e_) mpz_lcm(ke.backend().data(), ke.backend().data(), mpq_denref(x.backend().data()));
+      geometry::integer E[3];
+      for (std::size_t k = 0; k < 3; ++k) {
+        auto const* q = e_[k].backend().data();
+        mpz_divexact(E[k].backend().data(), ke.backend().data(), mpq_denref(q));
+        mpz_mul(E[k].backend().data(), E[k].backend().data(), mpq_numref(q));
+      }
+      ints_.E = {E[0], E[1], E[2]};
+      geometry::integer S(mpq_numref(s_.backend().data())), Ks(mpq_denref(s_.backend().data()));
+      ints_.Ks = Ks;
+      ints_.SKeK = S * ke * ints_.K;
+      ints_.KSKe = ints_.K * S * ke;
+    }
   }
 
   FT const& s() const noexcept { return s_; }
@@ -71,6 +90,21 @@ public:
 
   /// The image of a point of the scene (which must satisfy s + e·(x − c) > 0).
   point image(point const& x) const {
+    if constexpr (geometry::exact_field<FT>) {
+      // x = X / W: with u = K·X − W·C and Q = S·Ke·K·W + Ks·(E·u) (positive
+      // when s + e·(x − c) is), the image is (C·Q + K·S·Ke·u, K·Q), on
+      // integers, without a rational division.
+      auto const& z = x.homogeneous().integers();
+      auto const& W = z[3];
+      std::array<geometry::integer, 3> u;
+      for (std::size_t k = 0; k < 3; ++k) u[k] = ints_.K * z[k] - W * ints_.C[k];
+      geometry::integer Q = ints_.SKeK * W + ints_.Ks * geometry::dot(ints_.E, u);
+      if (Q.sign() <= 0) throw std::invalid_argument("svm::view_from_infinity: a point beyond the plane sent to infinity");
+      std::array<geometry::integer, 4> h;
+      for (std::size_t k = 0; k < 3; ++k) h[k] = ints_.C[k] * Q + ints_.KSKe * u[k];
+      h[3] = ints_.K * Q;
+      return point::from_homogeneous(std::move(h));
+    }
     FT w = s_ + along(x);
     if (!(w > 0)) throw std::invalid_argument("svm::view_from_infinity: a point beyond the plane sent to infinity");
     return {c_.x() + s_ * (x.x() - c_.x()) / w, c_.y() + s_ * (x.y() - c_.y()) / w, c_.z() + s_ * (x.z() - c_.z()) / w};
@@ -125,6 +159,12 @@ private:
     FT d = s_ * b - (a[0] * c_.x() + a[1] * c_.y() + a[2] * c_.z());
     return plane(geometry::hvec<FT, 4>(std::array<FT, 4>{a[0], a[1], a[2], d}), h.tag);
   }
+
+  /// The centre, the direction and s on integers (exact fields only).
+  struct integer_form {
+    std::array<geometry::integer, 3> C, E;
+    geometry::integer K, Ks, SKeK, KSKe;
+  } ints_;
 
   FT along(point const& x) const { return e_[0] * (x.x() - c_.x()) + e_[1] * (x.y() - c_.y()) + e_[2] * (x.z() - c_.z()); }
 

@@ -18,6 +18,17 @@ template <number FT> class point {
 public:
   point() : h_(std::array<FT, 4>{FT(0), FT(0), FT(0), FT(1)}) {}
   point(FT x, FT y, FT z) : h_(std::array<FT, 4>{std::move(x), std::move(y), std::move(z), FT(1)}) {}
+  /// The point of homogeneous integer coordinates `h` (exact fields only;
+  /// h[3] > 0): the same point as (h[0]/h[3], h[1]/h[3], h[2]/h[3]), whose
+  /// coordinates are divided out only when first read.
+  static point from_homogeneous(std::array<integer, 4> h)
+    requires exact_field<FT>
+  {
+    detail::make_primitive(h);
+    point p;
+    p.h_ = hvec<FT, 4>::from_point_integers(detail::integer_vector<4>(std::move(h)));
+    return p;
+  }
 
   FT const& x() const noexcept { return h_[0]; }
   FT const& y() const noexcept { return h_[1]; }
