@@ -197,6 +197,39 @@ TEST_CASE("parallel views agree with an exact parallel ray caster", "[svm][paral
   CHECK(compared > 20000);
 }
 
+TEST_CASE("a parallel view's image points, made on integers, are the projective map's", "[svm][parallel]") {
+  // view_from_infinity::image makes each image point from homogeneous
+  // integers; the map is x -> c + s (x - c) / (s + e.(x - c)) in rationals.
+  int checked = 0;
+  for (int t = 0; t < 200; ++t) {
+    auto q = [&](long r) { return Q(test::uniform(-r, r), test::uniform(1, 9)); };
+    std::vector<e3::point<Q>> pts;
+    for (int k = 0; k < 6; ++k) pts.emplace_back(q(50), q(50), q(50));
+    std::array<Q, 3> e{q(4), q(4), q(4)};
+    if (e[0] == 0 && e[1] == 0 && e[2] == 0) e[2] = Q(1, 3);
+    e3::point<Q> c(q(5), q(5), q(5));
+    svm::view_from_infinity<Q> view({svm::polygon<Q>{pts, 0}}, e, c);
+    auto const& s = view.s();
+    for (auto const& x : pts) {
+      Q w = s + e[0] * (x.x() - c.x()) + e[1] * (x.y() - c.y()) + e[2] * (x.z() - c.z());
+      e3::point<Q> want(c.x() + s * (x.x() - c.x()) / w, c.y() + s * (x.y() - c.y()) / w, c.z() + s * (x.z() - c.z()) / w);
+      auto got = view.image(x);
+      CHECK(got == want);
+      CHECK(got.x() == want.x());
+      CHECK(got.y() == want.y());
+      CHECK(got.z() == want.z());
+      CHECK(got[3] == Q(1));
+      ++checked;
+    }
+  }
+  CHECK(checked == 1200);
+  // A point from homogeneous integers, not primitive: the same point.
+  auto p = e3::point<Q>::from_homogeneous({integer(-6), integer(4), integer(10), integer(4)});
+  CHECK(p == e3::point<Q>(Q(-3, 2), Q(1), Q(5, 2)));
+  CHECK(p.x() == Q(-3, 2));
+  CHECK(p.z() == Q(5, 2));
+}
+
 TEST_CASE("the coverage tree and the map's locator answer as the paper's tree V does", "[svm][locate]") {
   // The same scenes built twice: in two passes (a coverage tree that is
   // rebuilt from its covered boundary finds the visible pieces, then the map
