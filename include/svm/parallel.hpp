@@ -47,34 +47,53 @@ public:
                      std::vector<point> const& also = {})
       : e_(std::move(toward)), c_(std::move(centre)) {
     if (e_[0] == 0 && e_[1] == 0 && e_[2] == 0) throw std::invalid_argument("svm::view_from_infinity: the direction is zero");
-    FT m(0);
-    auto widen = [&](point const& q) {
-      FT v = along(q);
-      if (v < 0) v = -v;
-      if (m < v) m = v;
-    };
-    for (auto const& p : polygons)
-      for (auto const& q : p.vertices) widen(q);
-    for (auto const& q : also) widen(q);
-    s_ = FT(2) * m + FT(1);
     if constexpr (geometry::exact_field<FT>) {
-      // c = C / K, e = E / Ke, s = S / Ks on integers, for `image`.
+      // c = C / K and e = E / Ke on integers; e·(x − c) = E·u / (Ke·K·W)
+      // with u = K·X − W·C for x = X / W, so the largest |e·(x − c)| is
+      // found by comparing fractions |E·u| / W on integers.
       auto const& cz = c_.homogeneous().integers();
       ints_.C = {cz[0], cz[1], cz[2]};
       ints_.K = cz[3];
       geometry::integer ke(1);
       for (auto const& x : e_) mpz_lcm(ke.backend().data(), ke.backend().data(), mpq_denref(x.backend().data()));
-      geometry::integer E[3];
       for (std::size_t k = 0; k < 3; ++k) {
         auto const* q = e_[k].backend().data();
-        mpz_divexact(E[k].backend().data(), ke.backend().data(), mpq_denref(q));
-        mpz_mul(E[k].backend().data(), E[k].backend().data(), mpq_numref(q));
+        mpz_divexact(ints_.E[k].backend().data(), ke.backend().data(), mpq_denref(q));
+        mpz_mul(ints_.E[k].backend().data(), ints_.E[k].backend().data(), mpq_numref(q));
       }
-      ints_.E = {E[0], E[1], E[2]};
+      geometry::integer top(0), below(1), v;
+      auto widen = [&](point const& q) {
+        auto const& z = q.homogeneous().integers();
+        v = 0;
+        for (std::size_t k = 0; k < 3; ++k) v += ints_.E[k] * (ints_.K * z[k] - z[3] * ints_.C[k]);
+        if (v.sign() < 0) v = -v;
+        if (v * below > top * z[3]) top = v, below = z[3];
+      };
+      for (auto const& p : polygons)
+        for (auto const& q : p.vertices) widen(q);
+      for (auto const& q : also) widen(q);
+      // s = 2·top / (below·Ke·K) + 1 = S / Ks.
+      FT m;
+      mpq_set_num(m.backend().data(), top.backend().data());
+      geometry::integer d = below * ke * ints_.K;
+      mpq_set_den(m.backend().data(), d.backend().data());
+      mpq_canonicalize(m.backend().data());
+      s_ = FT(2) * m + FT(1);
       geometry::integer S(mpq_numref(s_.backend().data())), Ks(mpq_denref(s_.backend().data()));
       ints_.Ks = Ks;
       ints_.SKeK = S * ke * ints_.K;
       ints_.KSKe = ints_.K * S * ke;
+    } else {
+      FT m(0);
+      auto widen = [&](point const& q) {
+        FT v = along(q);
+        if (v < 0) v = -v;
+        if (m < v) m = v;
+      };
+      for (auto const& p : polygons)
+        for (auto const& q : p.vertices) widen(q);
+      for (auto const& q : also) widen(q);
+      s_ = FT(2) * m + FT(1);
     }
   }
 

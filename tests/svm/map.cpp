@@ -210,6 +210,9 @@ TEST_CASE("a parallel view's image points, made on integers, are the projective 
     e3::point<Q> c(q(5), q(5), q(5));
     svm::view_from_infinity<Q> view({svm::polygon<Q>{pts, 0}}, e, c);
     auto const& s = view.s();
+    Q m(0);
+    for (auto const& x : pts) m = std::max(m, abs(e[0] * (x.x() - c.x()) + e[1] * (x.y() - c.y()) + e[2] * (x.z() - c.z())));
+    CHECK(s == 2 * m + 1);
     for (auto const& x : pts) {
       Q w = s + e[0] * (x.x() - c.x()) + e[1] * (x.y() - c.y()) + e[2] * (x.z() - c.z());
       e3::point<Q> want(c.x() + s * (x.x() - c.x()) / w, c.y() + s * (x.y() - c.y()) / w, c.z() + s * (x.z() - c.z()) / w);
