@@ -5,9 +5,11 @@
 /// A projective map sends the point at infinity in direction `e` to a finite
 /// point and keeps the scene's order along every line parallel to `e`:
 ///
-///     x ↦ c + s·(x − c) / (s + e·(x − c)),   s = 2·max|e·(x − c)| + 1
+///     x ↦ c + s·(x − c) / (s + e·(x − c)),   s = ⌊2·max|e·(x − c)|⌋ + 1
 ///
-/// over the scene's vertices x, about a centre c.  Every vertex stays on the
+/// over the scene's vertices x, about a centre c (over `double`, s is
+/// 2·max|e·(x − c)| + 1; exactly, an integer, so that the image's points
+/// carry no denominator of s).  Every vertex stays on the
 /// positive side of the plane the map sends to infinity (s + e·(x − c) > 0),
 /// so convex polygons stay convex and keep their orientation (the map's
 /// determinant is s⁴ > 0); lines go to lines and planes to planes; the plane
@@ -72,15 +74,13 @@ public:
       for (auto const& p : polygons)
         for (auto const& q : p.vertices) widen(q);
       for (auto const& q : also) widen(q);
-      // s = 2·top / (below·Ke·K) + 1 = S / Ks.
-      FT m;
-      mpq_set_num(m.backend().data(), top.backend().data());
-      geometry::integer d = below * ke * ints_.K;
-      mpq_set_den(m.backend().data(), d.backend().data());
-      mpq_canonicalize(m.backend().data());
-      s_ = FT(2) * m + FT(1);
-      geometry::integer S(mpq_numref(s_.backend().data())), Ks(mpq_denref(s_.backend().data()));
-      ints_.Ks = Ks;
+      // s = ⌊2·top / (below·Ke·K)⌋ + 1, an integer: the image's points
+      // then carry no denominator of s.
+      geometry::integer d = below * ke * ints_.K, S = 2 * top;
+      mpz_fdiv_q(S.backend().data(), S.backend().data(), d.backend().data());
+      S += 1;
+      s_ = FT(S);
+      ints_.Ks = 1;
       ints_.SKeK = S * ke * ints_.K;
       ints_.KSKe = ints_.K * S * ke;
     } else {
