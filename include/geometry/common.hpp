@@ -6,6 +6,7 @@
 #include "detail/convex.hpp"
 
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <type_traits>
 #include <utility>
@@ -161,6 +162,21 @@ sign restricted_det_sign(hvec<FT, 4> const& p, std::size_t k, hvec<FT, 4> const&
   return p.sign_at(k) == sign::negative ? -s : s;
 }
 
+namespace detail {
+/// The polynomial of `restricted_det_sign` on E3 for the first coordinate
+/// eliminated, not flipped: every variant has its degrees, weight and depth
+/// of roundings, so its static stage's constants serve all of them.
+inline constexpr auto restricted_vertex_side = [](auto const& P, auto const& H, auto const& A, auto const& B) {
+  auto r0 = P[0] * H[1] - H[0] * P[1];
+  auto r1 = P[0] * H[2] - H[0] * P[2];
+  auto r2 = P[0] * H[3] - H[0] * P[3];
+  auto c0 = A[1] * B[2] - A[2] * B[1];
+  auto c1 = A[2] * B[0] - A[0] * B[2];
+  auto c2 = A[0] * B[1] - A[1] * B[0];
+  return c0 * r0 + c1 * r1 + c2 * r2;
+};
+} // namespace detail
+
 /// The side of `h` on which a convex polygon of the plane `support`, bounded
 /// by `bounds` (three or more), lies wholly, touching allowed, as `split`
 /// would put it; `on` when it may cross `h` or lie in it (then `split`
@@ -171,6 +187,52 @@ oriented_side whole_side(hvec<FT, 4> const& support, std::size_t axis, std::vect
   std::size_t n = bounds.size();
   if (n < 3) return oriented_side::on;
   bool pos = false, neg = false;
+  if constexpr (exact_field<FT>) {
+    if (filter_config().enabled) [[likely]] {
+      // `restricted_det_sign`'s static stage for every vertex at once: the
+      // restriction of h, the same for all, made once.  The same operations
+      // as its polynomial, so the same error bound; a vertex it cannot
+      // decide goes through the whole predicate.
+      static constexpr auto k = detail::static_constants_of<decltype(detail::restricted_vertex_side), 4, 4, 3, 3>(
+          std::make_index_sequence<4>{});
+      constexpr double u = std::numeric_limits<double>::epsilon() / 2;
+      static constexpr double scale = 2.0 * k.depth * u * k.weight;
+      auto const &P = support.approx(), &H = h.approx();
+      std::array<std::size_t, 3> idx{};
+      for (std::size_t i = 0, j = 0; i < 4; ++i)
+        if (i != axis) idx[j++] = i;
+      double const r0 = P.v[axis] * H.v[idx[0]] - H.v[axis] * P.v[idx[0]];
+      double const r1 = P.v[axis] * H.v[idx[1]] - H.v[axis] * P.v[idx[1]];
+      double const r2 = P.v[axis] * H.v[idx[2]] - H.v[axis] * P.v[idx[2]];
+      bool const flip = detail::restriction_flips(support, axis), negated = support.sign_at(axis) == sign::negative;
+      double const ph = scale * P.norm * H.norm;
+      // Small integers: the polynomial in double is exact (every partial sum
+      // below 2^53), zeros included.
+      constexpr double two_53 = 9007199254740992.0;
+      bool const integral = P.integral && H.integral;
+      double const magnitude = k.weight * P.norm * H.norm;
+      for (std::size_t i = 0; i < n && !(pos && neg); ++i) {
+        auto const &A = bounds[i].line().approx(), &B = bounds[(i + 1) % n].line().approx();
+        if (filter_config().count_evaluations) ++filter_stats().evaluations;
+        double const c0 = A.v[1] * B.v[2] - A.v[2] * B.v[1];
+        double const c1 = A.v[2] * B.v[0] - A.v[0] * B.v[2];
+        double const c2 = A.v[0] * B.v[1] - A.v[1] * B.v[0];
+        double const v = flip ? c1 * r1 + c2 * r2 - c0 * r0 : c0 * r0 + c1 * r1 + c2 * r2;
+        double const bound = ph * A.norm * B.norm;
+        sign s;
+        if (v > bound) s = negated ? sign::negative : sign::positive;
+        else if (v < -bound) s = negated ? sign::positive : sign::negative;
+        else if (integral && A.integral && B.integral && magnitude * A.norm * B.norm < two_53)
+          s = v == 0 ? sign::zero : (v > 0) != negated ? sign::positive : sign::negative;
+        else s = restricted_det_sign(support, axis, h, bounds[i].line(), bounds[(i + 1) % n].line());
+        pos = pos || s == sign::positive;
+        neg = neg || s == sign::negative;
+      }
+      if (pos && !neg) return oriented_side::positive;
+      if (neg && !pos) return oriented_side::negative;
+      return oriented_side::on;
+    }
+  }
   for (std::size_t i = 0; i < n && !(pos && neg); ++i) {
     sign s = restricted_det_sign(support, axis, h, bounds[i].line(), bounds[(i + 1) % n].line());
     pos = pos || s == sign::positive;

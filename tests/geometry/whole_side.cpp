@@ -61,4 +61,46 @@ TEST_CASE("whole_side agrees with split in E2, S2 and E3, degenerate cases inclu
   CHECK(straddling > 1000);
 }
 
+TEST_CASE("whole_side in E3 names the side the vertices' exact signs name", "[geometry][whole_side]") {
+  // The E3 test evaluates its filter for all vertices at once; against the
+  // vertices' signs one by one (`restricted_det_sign`, exact), on polygons of
+  // small integers, of large fractions (where the filter fails more often)
+  // and seen against planes through their vertices and near them.
+  auto side_of_signs = [](e3::sub_hyperplane<Q> const& s, e3::hyperplane<Q> const& h) {
+    bool pos = false, neg = false;
+    std::size_t n = s.bounds.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      auto v = restricted_det_sign(s.support.n, s.axis, h.n, s.bounds[i].line(), s.bounds[(i + 1) % n].line());
+      pos = pos || v == sign::positive;
+      neg = neg || v == sign::negative;
+    }
+    return pos && !neg ? oriented_side::positive : neg && !pos ? oriented_side::negative : oriented_side::on;
+  };
+  int compared = 0, decided = 0;
+  for (int t = 0; t < 3000; ++t) {
+    bool big = t % 2 == 1;
+    auto coord = [&] {
+      if (!big) return Q(test::uniform(-3, 3));
+      return Q(test::uniform(-1000000000000L, 1000000000000L), test::uniform(1, 1000000007L));
+    };
+    auto pt = [&] { return e3::point<Q>(coord(), coord(), coord()); };
+    std::vector<e3::point<Q>> v{pt(), pt(), pt()};
+    if (e3::plane_through(v[0], v[1], v[2]).n.is_zero()) continue;
+    auto poly = e3::convex_polygon(v);
+    e3::point<Q> a = pt(), b = pt();
+    // A point near the polygon's plane: its first vertex moved a little.
+    e3::point<Q> near(v[0].x() + Q(1, 1000003), v[0].y(), v[0].z());
+    for (auto const& h : {e3::plane_through(a, b, v[0]), e3::plane_through(v[0], v[1], a), e3::plane_through(v[0], v[1], near),
+                          e3::plane_through(a, b, near), poly.support.opposite()}) {
+      if (h.n.is_zero()) continue;
+      auto w = e3::exact_kernel::whole_side(poly, h);
+      CHECK(w == side_of_signs(poly, h));
+      ++compared;
+      decided += w != oriented_side::on;
+    }
+  }
+  CHECK(compared > 10000);
+  CHECK(decided > 3000);
+}
+
 } // namespace geometry_whole_side_tests
