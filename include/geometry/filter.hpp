@@ -829,6 +829,10 @@ template <class F, std::size_t... N> stage_result static_stage(F const& f, appro
   (times_power(a.norm, k.degree[i++]), ...);
   if (v > bound) return {true, sign::positive, {}};
   if (v < -bound) return {true, sign::negative, {}};
+  // Integers whose polynomial on absolute values stays below 2^53
+  // (`bound / scale · weight`): every operation was exact, zeros included.
+  constexpr double two_53 = 9007199254740992.0;
+  if ((a.integral && ...) && bound * (k.weight / scale) < two_53) return {true, sign_of(v), {}};
   return {false, sign::zero, {}};
 }
 template <class F, std::size_t... N> stage_result semi_static(F const& f, std::array<sfloat, N> const&... a) {
