@@ -370,6 +370,35 @@ TEST_CASE("the static stage: constants from the polynomial, and never a wrong ce
   CHECK(certain >= 300); // the independent triples at least
 }
 
+TEST_CASE("the static stage decides small integers exactly, zeros included, and nothing past 2^53", "[filter]") {
+  auto det = [](auto const& x, auto const& y, auto const& z) { return det3(x, y, z); };
+  // Coordinates below 2^15, the third row up to 2^17: 6 · 2^47 < 2^53, every
+  // operation exact.  Dependent rows half the time: exact zeros.
+  int zeros = 0, wrong = 0;
+  for (int t = 0; t < 3000; ++t) {
+    auto small = [] { return static_cast<double>(test::uniform(-(1 << 15), 1 << 15)); };
+    std::array<double, 3> a{small(), small(), small()}, b{small(), small(), small()}, c{small(), small(), small()};
+    if (t % 2) {
+      double k = static_cast<double>(test::uniform(-1, 1)), l = static_cast<double>(test::uniform(-1, 1));
+      c = {k * a[0] + l * b[0], k * a[1] + l * b[1], k * a[2] + l * b[2]};
+    }
+    hvec<Q, 3> A(q3(a[0], a[1], a[2])), B(q3(b[0], b[1], b[2])), C(q3(c[0], c[1], c[2]));
+    Q truth = test::ref_det3(q3(a[0], a[1], a[2]), q3(b[0], b[1], b[2]), q3(c[0], c[1], c[2]));
+    auto r = detail::static_stage(det, A.approx(), B.approx(), C.approx());
+    CHECK(r.certain);
+    wrong += static_cast<int>(r.s) != truth.sign();
+    zeros += truth.sign() == 0;
+  }
+  CHECK(wrong == 0);
+  CHECK(zeros > 1000);
+  // Past 2^53 (rows near 2^20), a zero is left to the later stages.
+  double big = 1 << 20;
+  hvec<Q, 3> A(q3(big + 1, 3, 5)), B(q3(7, big - 3, 11)), C(q3(big + 8, big, 16));
+  CHECK(test::ref_det3(q3(big + 1, 3, 5), q3(7, big - 3, 11), q3(big + 8, big, 16)) == 0);
+  CHECK_FALSE(detail::static_stage(det, A.approx(), B.approx(), C.approx()).certain);
+  CHECK(det_sign(A, B, C) == sign::zero);
+}
+
 TEST_CASE("evaluations are counted only when asked for; fallbacks always", "[filter]") {
   Q big = Q(boost::multiprecision::mpz_int(1) << 60) + 1; // not a double: the filter hands over
   hvec<Q, 3> a(std::array<Q, 3>{big, Q(1), Q(0)}), b(std::array<Q, 3>{Q(1), -big, Q(5)});
