@@ -5,6 +5,7 @@
 
 #include "detail/convex.hpp"
 
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -175,68 +176,71 @@ inline constexpr auto restricted_vertex_side = [](auto const& P, auto const& H, 
   auto c2 = A[0] * B[1] - A[1] * B[0];
   return c0 * r0 + c1 * r1 + c2 * r2;
 };
+
+/// `restricted_det_sign`'s static stage for many vertices of one polygon
+/// against one hyperplane: the restriction of `h`, the same for all, is made
+/// once.  The same operations as its polynomial, so the same error bound,
+/// and the same exact decision on small integers (`static_stage`).
+class restricted_vertex_filter {
+public:
+  restricted_vertex_filter(approximation<4> const& p, approximation<4> const& h, std::size_t axis, bool flip, bool negated)
+      : flip_(flip), negated_(negated), integral_(p.integral && h.integral), bound_(scale * p.norm * h.norm),
+        magnitude_(k.weight * p.norm * h.norm) {
+    std::array<std::size_t, 3> idx{};
+    for (std::size_t i = 0, j = 0; i < 4; ++i)
+      if (i != axis) idx[j++] = i;
+    for (std::size_t j = 0; j < 3; ++j) r_[j] = p.v[axis] * h.v[idx[j]] - h.v[axis] * p.v[idx[j]];
+  }
+
+  /// The side of the vertex a × b, when this stage decides it.
+  std::optional<sign> operator()(approximation<3> const& a, approximation<3> const& b) const {
+    double const c0 = a.v[1] * b.v[2] - a.v[2] * b.v[1];
+    double const c1 = a.v[2] * b.v[0] - a.v[0] * b.v[2];
+    double const c2 = a.v[0] * b.v[1] - a.v[1] * b.v[0];
+    double const v = flip_ ? c1 * r_[1] + c2 * r_[2] - c0 * r_[0] : c0 * r_[0] + c1 * r_[1] + c2 * r_[2];
+    auto signed_as = [this](double x) { return x == 0 ? sign::zero : (x > 0) != negated_ ? sign::positive : sign::negative; };
+    if (v > bound_ * a.norm * b.norm || v < -bound_ * a.norm * b.norm) return signed_as(v);
+    // Small integers: every operation was exact, zeros included.
+    if (integral_ && a.integral && b.integral && magnitude_ * a.norm * b.norm < two_53) return signed_as(v);
+    return std::nullopt;
+  }
+
+private:
+  static constexpr auto k = static_constants_of<decltype(restricted_vertex_side), 4, 4, 3, 3>(std::make_index_sequence<4>{});
+  static constexpr double scale = 2.0 * k.depth * (std::numeric_limits<double>::epsilon() / 2) * k.weight;
+  bool flip_, negated_, integral_;
+  double bound_, magnitude_;
+  std::array<double, 3> r_{};
+};
 } // namespace detail
 
 /// The side of `h` on which a convex polygon of the plane `support`, bounded
 /// by `bounds` (three or more), lies wholly, touching allowed, as `split`
 /// would put it; `on` when it may cross `h` or lie in it (then `split`
-/// decides).  Constructs nothing.
+/// decides).  Constructs nothing.  Over an exact field the filter's static
+/// stage runs for all vertices at once (`restricted_vertex_filter`); a
+/// vertex it leaves undecided goes through the whole predicate.
 template <number FT, class Bound>
 oriented_side whole_side(hvec<FT, 4> const& support, std::size_t axis, std::vector<Bound> const& bounds,
                          hvec<FT, 4> const& h) {
   std::size_t n = bounds.size();
   if (n < 3) return oriented_side::on;
+  std::optional<detail::restricted_vertex_filter> filter;
+  if constexpr (exact_field<FT>)
+    if (filter_config().enabled) [[likely]]
+      filter.emplace(support.approx(), h.approx(), axis, detail::restriction_flips(support, axis), support.sign_at(axis) == sign::negative);
   bool pos = false, neg = false;
-  if constexpr (exact_field<FT>) {
-    if (filter_config().enabled) [[likely]] {
-      // `restricted_det_sign`'s static stage for every vertex at once: the
-      // restriction of h, the same for all, made once.  The same operations
-      // as its polynomial, so the same error bound; a vertex it cannot
-      // decide goes through the whole predicate.
-      static constexpr auto k = detail::static_constants_of<decltype(detail::restricted_vertex_side), 4, 4, 3, 3>(
-          std::make_index_sequence<4>{});
-      constexpr double u = std::numeric_limits<double>::epsilon() / 2;
-      static constexpr double scale = 2.0 * k.depth * u * k.weight;
-      auto const &P = support.approx(), &H = h.approx();
-      std::array<std::size_t, 3> idx{};
-      for (std::size_t i = 0, j = 0; i < 4; ++i)
-        if (i != axis) idx[j++] = i;
-      double const r0 = P.v[axis] * H.v[idx[0]] - H.v[axis] * P.v[idx[0]];
-      double const r1 = P.v[axis] * H.v[idx[1]] - H.v[axis] * P.v[idx[1]];
-      double const r2 = P.v[axis] * H.v[idx[2]] - H.v[axis] * P.v[idx[2]];
-      bool const flip = detail::restriction_flips(support, axis), negated = support.sign_at(axis) == sign::negative;
-      double const ph = scale * P.norm * H.norm;
-      // Small integers: the polynomial in double is exact (every partial sum
-      // below 2^53), zeros included.
-      constexpr double two_53 = 9007199254740992.0;
-      bool const integral = P.integral && H.integral;
-      double const magnitude = k.weight * P.norm * H.norm;
-      for (std::size_t i = 0; i < n && !(pos && neg); ++i) {
-        auto const &A = bounds[i].line().approx(), &B = bounds[(i + 1) % n].line().approx();
-        if (filter_config().count_evaluations) ++filter_stats().evaluations;
-        double const c0 = A.v[1] * B.v[2] - A.v[2] * B.v[1];
-        double const c1 = A.v[2] * B.v[0] - A.v[0] * B.v[2];
-        double const c2 = A.v[0] * B.v[1] - A.v[1] * B.v[0];
-        double const v = flip ? c1 * r1 + c2 * r2 - c0 * r0 : c0 * r0 + c1 * r1 + c2 * r2;
-        double const bound = ph * A.norm * B.norm;
-        sign s;
-        if (v > bound) s = negated ? sign::negative : sign::positive;
-        else if (v < -bound) s = negated ? sign::positive : sign::negative;
-        else if (integral && A.integral && B.integral && magnitude * A.norm * B.norm < two_53)
-          s = v == 0 ? sign::zero : (v > 0) != negated ? sign::positive : sign::negative;
-        else s = restricted_det_sign(support, axis, h, bounds[i].line(), bounds[(i + 1) % n].line());
-        pos = pos || s == sign::positive;
-        neg = neg || s == sign::negative;
-      }
-      if (pos && !neg) return oriented_side::positive;
-      if (neg && !pos) return oriented_side::negative;
-      return oriented_side::on;
-    }
-  }
   for (std::size_t i = 0; i < n && !(pos && neg); ++i) {
-    sign s = restricted_det_sign(support, axis, h, bounds[i].line(), bounds[(i + 1) % n].line());
-    pos = pos || s == sign::positive;
-    neg = neg || s == sign::negative;
+    auto const &a = bounds[i].line(), &b = bounds[(i + 1) % n].line();
+    std::optional<sign> s;
+    if constexpr (exact_field<FT>)
+      if (filter) {
+        if (filter_config().count_evaluations) ++filter_stats().evaluations;
+        s = (*filter)(a.approx(), b.approx());
+      }
+    if (!s) s = restricted_det_sign(support, axis, h, a, b);
+    pos = pos || *s == sign::positive;
+    neg = neg || *s == sign::negative;
   }
   if (pos && !neg) return oriented_side::positive;
   if (neg && !pos) return oriented_side::negative;

@@ -272,11 +272,10 @@ public:
       auto c = std::make_unique<std::array<rational, N>>();
       auto const& z = z_.big();
       for (std::size_t i = 0; i < N; ++i) mpq_set_z((*c)[i].backend().data(), z[i].backend().data());
-      if (point_)
-        for (std::size_t i = 0; i < N; ++i) {
-          if (i + 1 < N) mpq_div((*c)[i].backend().data(), (*c)[i].backend().data(), (*c)[N - 1].backend().data());
-          else mpq_set_ui((*c)[i].backend().data(), 1, 1);
-        }
+      if (point_) { // divided by the last, which becomes 1
+        for (std::size_t i = 0; i + 1 < N; ++i) mpq_div((*c)[i].backend().data(), (*c)[i].backend().data(), (*c)[N - 1].backend().data());
+        mpq_set_ui((*c)[N - 1].backend().data(), 1, 1);
+      }
       return c;
     });
     if (!negated) return c;
@@ -295,6 +294,9 @@ private:
   lazy_value<std::array<rational, N>> negative_c_;
   bool point_ = false;
 };
+
+/// Below this, integers and every sum and product of them are exact in double.
+inline constexpr double two_53 = 0x1p53;
 
 /// Divides `z` by the greatest common divisor of its entries (when not 0).
 template <std::size_t M> void make_primitive(std::array<integer, M>& z) {
@@ -738,7 +740,6 @@ template <class F, std::size_t... N>
 [[gnu::noinline]] sign filtered_slow(F const& f, sfloat r, hvec<rational, N> const&... v) {
   auto& stats = filter_stats();
   if (filter_config().enabled) {
-    constexpr double two_53 = 9007199254740992.0;
     if (r.m == 0.0) return sign::zero;
     if ((v.approx().integral && ...) && r.m < two_53) return sign_of(r.v);
   }
@@ -831,7 +832,6 @@ template <class F, std::size_t... N> stage_result static_stage(F const& f, appro
   if (v < -bound) return {true, sign::negative, {}};
   // Integers whose polynomial on absolute values stays below 2^53
   // (`bound / scale · weight`): every operation was exact, zeros included.
-  constexpr double two_53 = 9007199254740992.0;
   if ((a.integral && ...) && bound * (k.weight / scale) < two_53) return {true, sign_of(v), {}};
   return {false, sign::zero, {}};
 }

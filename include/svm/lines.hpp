@@ -297,11 +297,6 @@ inline double bend(v3<double> const& e, v3<double> const& u, v3<double> const& w
   return std::numbers::pi - std::acos(std::clamp(c, -1.0, 1.0));
 }
 
-template <class FT> double to_double(FT const& x) {
-  if constexpr (std::is_same_v<FT, double>) return x;
-  else return x.template convert_to<double>();
-}
-
 } // namespace detail
 
 /// The edges of `polygons`, each once: vertices welded by exact

@@ -49,6 +49,11 @@ public:
                      std::vector<point> const& also = {})
       : e_(std::move(toward)), c_(std::move(centre)) {
     if (e_[0] == 0 && e_[1] == 0 && e_[2] == 0) throw std::invalid_argument("svm::view_from_infinity: the direction is zero");
+    auto each_point = [&](auto&& f) {
+      for (auto const& p : polygons)
+        for (auto const& q : p.vertices) f(q);
+      for (auto const& q : also) f(q);
+    };
     if constexpr (geometry::exact_field<FT>) {
       // c = C / K and e = E / Ke on integers; e·(x − c) = E·u / (Ke·K·W)
       // with u = K·X − W·C for x = X / W, so the largest |e·(x − c)| is
@@ -64,35 +69,27 @@ public:
         mpz_mul(ints_.E[k].backend().data(), ints_.E[k].backend().data(), mpq_numref(q));
       }
       geometry::integer top(0), below(1), v;
-      auto widen = [&](point const& q) {
+      each_point([&](point const& q) {
         auto const& z = q.homogeneous().integers();
         v = 0;
         for (std::size_t k = 0; k < 3; ++k) v += ints_.E[k] * (ints_.K * z[k] - z[3] * ints_.C[k]);
         if (v.sign() < 0) v = -v;
         if (v * below > top * z[3]) top = v, below = z[3];
-      };
-      for (auto const& p : polygons)
-        for (auto const& q : p.vertices) widen(q);
-      for (auto const& q : also) widen(q);
+      });
       // s = ⌊2·top / (below·Ke·K)⌋ + 1, an integer: the image's points
       // then carry no denominator of s.
       geometry::integer d = below * ke * ints_.K, S = 2 * top;
       mpz_fdiv_q(S.backend().data(), S.backend().data(), d.backend().data());
       S += 1;
       s_ = FT(S);
-      ints_.Ks = 1;
       ints_.SKeK = S * ke * ints_.K;
-      ints_.KSKe = ints_.K * S * ke;
     } else {
       FT m(0);
-      auto widen = [&](point const& q) {
+      each_point([&](point const& q) {
         FT v = along(q);
         if (v < 0) v = -v;
         if (m < v) m = v;
-      };
-      for (auto const& p : polygons)
-        for (auto const& q : p.vertices) widen(q);
-      for (auto const& q : also) widen(q);
+      });
       s_ = FT(2) * m + FT(1);
     }
   }
@@ -110,17 +107,17 @@ public:
   /// The image of a point of the scene (which must satisfy s + e·(x − c) > 0).
   point image(point const& x) const {
     if constexpr (geometry::exact_field<FT>) {
-      // x = X / W: with u = K·X − W·C and Q = S·Ke·K·W + Ks·(E·u) (positive
+      // x = X / W: with u = K·X − W·C and Q = S·Ke·K·W + E·u (positive
       // when s + e·(x − c) is), the image is (C·Q + K·S·Ke·u, K·Q), on
       // integers, without a rational division.
       auto const& z = x.homogeneous().integers();
       auto const& W = z[3];
       std::array<geometry::integer, 3> u;
       for (std::size_t k = 0; k < 3; ++k) u[k] = ints_.K * z[k] - W * ints_.C[k];
-      geometry::integer Q = ints_.SKeK * W + ints_.Ks * geometry::dot(ints_.E, u);
+      geometry::integer Q = ints_.SKeK * W + geometry::dot(ints_.E, u);
       if (Q.sign() <= 0) throw std::invalid_argument("svm::view_from_infinity: a point beyond the plane sent to infinity");
       std::array<geometry::integer, 4> h;
-      for (std::size_t k = 0; k < 3; ++k) h[k] = ints_.C[k] * Q + ints_.KSKe * u[k];
+      for (std::size_t k = 0; k < 3; ++k) h[k] = ints_.C[k] * Q + ints_.SKeK * u[k];
       h[3] = ints_.K * Q;
       return point::from_homogeneous(std::move(h));
     }
@@ -182,7 +179,7 @@ private:
   /// The centre, the direction and s on integers (exact fields only).
   struct integer_form {
     std::array<geometry::integer, 3> C, E;
-    geometry::integer K, Ks, SKeK, KSKe;
+    geometry::integer K, SKeK; ///< SKeK = S·Ke·K, s = S an integer
   } ints_;
 
   FT along(point const& x) const { return e_[0] * (x.x() - c_.x()) + e_[1] * (x.y() - c_.y()) + e_[2] * (x.z() - c_.z()); }
