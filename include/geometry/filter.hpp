@@ -616,18 +616,28 @@ public:
     return r;
   }
 
-  /// The sign of coordinate `i`, read without making rationals.
+  /// The sign of coordinate `i`, read without making rationals: from its
+  /// double (a nonzero integer's is nonzero, of the same sign; NaN when too
+  /// long for a double), else from the integer.
   sign sign_at(std::size_t i) const {
     if constexpr (is_exact) {
+      double v = a_.v[i];
+      if (v > 0) return sign::positive;
+      if (v < 0) return sign::negative;
+      if (v == 0) return sign::zero;
       auto s = s_->integers(false).sign_at(i);
       return negated_ ? -s : s;
     } else {
       return sign_of(c_[i]);
     }
   }
-  /// Whether `|v[i]| > |v[j]|`, read without making rationals.
+  /// Whether `|v[i]| > |v[j]|`, read without making rationals: the doubles
+  /// decide when they differ (rounding keeps order), the integers otherwise.
   bool abs_greater(std::size_t i, std::size_t j) const {
     if constexpr (is_exact) {
+      double x = std::fabs(a_.v[i]), y = std::fabs(a_.v[j]);
+      if (x > y) return true;
+      if (x < y) return false;
       return s_->integers(false).abs_greater(i, j);
     } else {
       using std::abs;
