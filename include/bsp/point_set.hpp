@@ -291,26 +291,35 @@ namespace detail {
 template <geometry G, class N, label L>
 void push_down(tree<G, N, L> const& t, typename G::sub_hyperplane s, node_id n, int probe,
                std::vector<std::pair<typename G::sub_hyperplane, L>>& out) {
-  std::vector<std::pair<typename G::sub_hyperplane, node_id>> stack{{std::move(s), n}};
+  // A piece goes down in place while it passes whole; the stack holds the
+  // parts of split pieces.
+  std::vector<std::pair<typename G::sub_hyperplane, node_id>> stack;
+  auto descend = [&](typename G::sub_hyperplane piece, node_id m) {
+    for (;;) {
+      if (t.is_leaf(m)) {
+        out.emplace_back(std::move(piece), t.leaf_data(m));
+        return;
+      }
+      if (int w = detail::whole_side<G>(piece, t.splitter(m))) {
+        m = t.child(m, w);
+        continue;
+      }
+      auto r = G::split(piece, t.splitter(m));
+      if (r.is_coincident()) {
+        // Lying in m's hyperplane: the side probed decides the child.
+        m = t.child(m, probe * static_cast<int>(r.coincident));
+        continue;
+      }
+      if (r.negative) stack.emplace_back(std::move(*r.negative), t.negative(m));
+      if (r.positive) stack.emplace_back(std::move(*r.positive), t.positive(m));
+      return;
+    }
+  };
+  descend(std::move(s), n);
   while (!stack.empty()) {
     auto [piece, m] = std::move(stack.back());
     stack.pop_back();
-    if (t.is_leaf(m)) {
-      out.emplace_back(std::move(piece), t.leaf_data(m));
-      continue;
-    }
-    if (int w = detail::whole_side<G>(piece, t.splitter(m))) {
-      stack.emplace_back(std::move(piece), t.child(m, w));
-      continue;
-    }
-    auto r = G::split(piece, t.splitter(m));
-    if (r.is_coincident()) {
-      // Lying in m's hyperplane: the side probed decides the child.
-      stack.emplace_back(std::move(piece), t.child(m, probe * static_cast<int>(r.coincident)));
-      continue;
-    }
-    if (r.negative) stack.emplace_back(std::move(*r.negative), t.negative(m));
-    if (r.positive) stack.emplace_back(std::move(*r.positive), t.positive(m));
+    descend(std::move(piece), m);
   }
 }
 
