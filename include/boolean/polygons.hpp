@@ -271,10 +271,7 @@ inline multipolygon assemble_pieces(std::vector<plane_kernel::sub_hyperplane> co
       std::size_t e = l[i], before = l[(i + k - 1) % k];
       if (line[before] == line[e]) continue; // straight on
       auto& q = point[from[e]];
-      if (!q) {
-        auto const& v = vertex_id.vertex[from[e]];
-        q.emplace(rational(v[0] / v[2]), rational(v[1] / v[2]));
-      }
+      if (!q) q = point2::from_homogeneous(vertex_id.vertex[from[e]]);
       r.push_back(*q);
     }
     if (r.size() >= 3) rings.push_back(std::move(r));

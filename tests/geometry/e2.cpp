@@ -214,4 +214,93 @@ TEMPLATE_TEST_CASE("E2 segments split exactly and report coincidence", "[e2]", d
   }
 }
 
+TEMPLATE_TEST_CASE("E2 segments are the whole line cut by their two cross lines", "[e2]", double, rational) {
+  using FT = TestType;
+  // What `segment` builds directly must be what splitting the whole line
+  // at both ends gives: the same support, axis, bounds and order.
+  auto by_splits = [](e2::point<FT> const& p, e2::point<FT> const& q) {
+    auto l = e2::line_through(p, q);
+    auto s = e2::split(e2::whole_line(l), e2::cross_line(l, p, q)).positive;
+    REQUIRE(s);
+    auto t = e2::split(*s, e2::cross_line(l, q, p)).positive;
+    REQUIRE(t);
+    return *t;
+  };
+  auto check = [&](e2::point<FT> const& p, e2::point<FT> const& q) {
+    auto a = e2::segment(p, q);
+    auto b = by_splits(p, q);
+    CHECK(a.support.n == b.support.n);
+    CHECK(a.axis == b.axis);
+    REQUIRE(a.bounds.size() == 2);
+    REQUIRE(b.bounds.size() == 2);
+    for (std::size_t i = 0; i < 2; ++i) {
+      CHECK(a.bounds[i].original.n == b.bounds[i].original.n);
+      CHECK(a.bounds[i].restricted == b.bounds[i].restricted);
+    }
+    auto ends = e2::endpoints(a);
+    REQUIRE(ends);
+    check_same(ends->first, p);
+    check_same(ends->second, q);
+  };
+  auto P = [](Q x, Q y) { return pt<FT>(x, y); };
+  // Horizontal, vertical and diagonal lines (|a| = |b|: the tie between
+  // the two kinds of cross line), in both directions.
+  for (auto [x, y] : std::vector<std::pair<int, int>>{{1, 0}, {0, 1}, {1, 1}, {1, -1}, {-1, 1}, {-1, -1}, {-1, 0}, {0, -1}, {3, 7}, {-7, 3}})
+    check(P(Q(1, 3), Q(-2, 5)), P(Q(1, 3) + x, Q(-2, 5) + y));
+  for (int i = 0; i < 300; ++i) {
+    bool decimal = i % 2 == 1;
+    auto p = random_point<FT>(decimal), q = random_point<FT>(decimal);
+    if (p == q) continue;
+    check(p, q);
+  }
+}
+
+TEST_CASE("E2 cell areas: integer corners and fractional ones alike", "[e2]") {
+  // Triangles and the quadrilateral cells of a square cut by a line, with
+  // corners of small integers (summed in 128 bits), fractions and integers
+  // past 2^40 (in rationals), against the shoelace formula in rationals.
+  Q const big = Q(geometry::integer(1) << 40);
+  auto shoelace = [](std::vector<e2::point<rational>> const& v) {
+    Q s(0);
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      auto const &a = v[i], &b = v[(i + 1) % v.size()];
+      s += a.x() * b.y() - a.y() * b.x();
+    }
+    return Q(s / 2);
+  };
+  for (int t = 0; t < 300; ++t) {
+    int kind = t % 3;
+    auto coordinate = [&] { return kind == 0 ? test::random_integer() : kind == 1 ? test::random_decimal() : big + test::random_integer(); };
+    std::vector<e2::point<rational>> v;
+    for (;;) {
+      v = {pt<rational>(coordinate(), coordinate()), pt<rational>(coordinate(), coordinate()), pt<rational>(coordinate(), coordinate())};
+      auto o = e2::orientation(v[0], v[1], v[2]);
+      if (o == sign::zero) continue;
+      if (o == sign::negative) std::swap(v[1], v[2]);
+      break;
+    }
+    auto area = e2::area(e2::convex_polygon(v));
+    REQUIRE(area);
+    CHECK(*area == shoelace(v));
+    // A square with those corners' spread, cut through two of its sides: both
+    // parts' areas add up to the square's.
+    Q lo = v[0].x(), hi = lo + 1000;
+    auto square = e2::convex_polygon(std::vector<e2::point<rational>>{pt<rational>(lo, lo), pt<rational>(hi, lo), pt<rational>(hi, hi), pt<rational>(lo, hi)});
+    auto cut = e2::split(square, e2::line_through(pt<rational>(lo - 1, lo + Q(1, 3)), pt<rational>(hi + 1, hi - 7)));
+    REQUIRE(cut.negative);
+    REQUIRE(cut.positive);
+    CHECK(*e2::area(*cut.negative) + *e2::area(*cut.positive) == 1000 * 1000);
+  }
+}
+
+TEST_CASE("E2 points from homogeneous integers are the same points", "[e2]") {
+  for (int t = 0; t < 200; ++t) {
+    auto p = random_point<rational>(t % 2 == 1);
+    auto q = e2::point<rational>::from_homogeneous(p.homogeneous());
+    CHECK(q == p);
+    CHECK(q.x() == p.x());
+    CHECK(q.y() == p.y());
+  }
+}
+
 } // namespace geometry_e2_tests

@@ -6,6 +6,8 @@
 #include "../detail/split.hpp"
 #include "predicates.hpp"
 
+#include <cmath>
+#include <cstdint>
 #include <optional>
 #include <stdexcept>
 
@@ -16,9 +18,11 @@ template <number FT> hyperplane<FT> line_through(point<FT> const& p, point<FT> c
   return hyperplane<FT>(cross(p.homogeneous(), q.homogeneous()), tag);
 }
 
-/// The line at infinity, positive on the whole plane.
+/// The line at infinity, positive on the whole plane (made once; a copy
+/// shares its numbers).
 template <number FT> hyperplane<FT> line_at_infinity() {
-  return hyperplane<FT>(hvec<FT, 3>(std::array<FT, 3>{FT(0), FT(0), FT(1)}));
+  static hyperplane<FT> const inf(hvec<FT, 3>(std::array<FT, 3>{FT(0), FT(0), FT(1)}));
+  return inf;
 }
 
 /// @name Polytopes
@@ -81,12 +85,32 @@ template <number FT> std::optional<FT> area(polytope<FT> const& c) {
     if (h.empty()) return std::nullopt;
     for (auto const& x : h)
       if (x.sign_at(2) != sign::positive) return std::nullopt;
-    auto const& o = h[0].integers();
+    // A triangle of three points of integer coordinates below 2^40 (w = 1
+    // in primitive form: input vertices, most of a cell's) adds an integer
+    // below 2^83, summed in 128 bits; the others add rationals.
+    auto small = [](hvec<FT, 3> const& x) {
+      auto const& a = x.approx();
+      return a.integral && a.v[2] == 1 && std::fabs(a.v[0]) < 0x1p40 && std::fabs(a.v[1]) < 0x1p40;
+    };
+    auto const& ho = h[0];
+    bool o_small = small(ho);
+    detail::int128 z = 0;
     FT twice(0);
     for (std::size_t i = 1; i + 1 < h.size(); ++i) {
-      auto const &a = h[i].integers(), &b = h[i + 1].integers();
+      if (o_small && small(h[i]) && small(h[i + 1])) {
+        auto const &o = ho.approx().v, &a = h[i].approx().v, &b = h[i + 1].approx().v;
+        auto d = [](double u, double v) { return static_cast<detail::int128>(static_cast<std::int64_t>(u) - static_cast<std::int64_t>(v)); };
+        z += d(a[0], o[0]) * d(b[1], o[1]) - d(a[1], o[1]) * d(b[0], o[0]);
+        continue;
+      }
+      auto const &o = ho.integers(), &a = h[i].integers(), &b = h[i + 1].integers();
       integer n = det3(o, a, b);
       if (n != 0) twice += FT(n, integer(o[2] * a[2] * b[2]));
+    }
+    if (z != 0) {
+      integer w;
+      detail::set_integer(w, z);
+      twice += FT(w);
     }
     return FT(twice / FT(2));
   }
@@ -123,28 +147,51 @@ template <number FT> split_result<sub_hyperplane<FT>> split(sub_hyperplane<FT> c
 /// A line through `p`, transverse to `support`, parallel to a coordinate axis
 /// (degree 1 in `p`), oriented so that `toward` is on its positive side.
 template <number FT> hyperplane<FT> cross_line(hyperplane<FT> const& support, point<FT> const& p, point<FT> const& toward) {
-  using std::abs;
-  bool horizontal = abs(support.n[0]) >= abs(support.n[1]); // a steep line is cut by a horizontal one
-  std::array<FT, 3> c = horizontal ? std::array<FT, 3>{FT(0), FT(1), FT(-p.y())} : std::array<FT, 3>{FT(1), FT(0), FT(-p.x())};
-  hyperplane<FT> b{hvec<FT, 3>(c)};
+  // A steep line is cut by a horizontal one.  On p's homogeneous (X, Y, W),
+  // W > 0: the line W·y − Y = 0, or W·x − X = 0, made on integers.
+  bool horizontal = !support.n.abs_greater(1, 0);
+  auto line = [horizontal](auto const& P) {
+    using T = std::remove_cvref_t<decltype(P[0])>;
+    return horizontal ? std::array<T, 3>{T{}, P[2], -P[1]} : std::array<T, 3>{P[2], T{}, -P[0]};
+  };
+  hyperplane<FT> b{construct<3>(line, p.homogeneous())};
   return side(b, toward) == oriented_side::negative ? b.opposite() : b;
 }
 
-/// The segment from `p` to `q` (distinct points) on `line_through(p, q)`.
+/// The segment from `p` to `q` (distinct points) on `line_through(p, q)`:
+/// the line cut by `cross_line(l, p, q)` at its start and `cross_line(l, q,
+/// p)` at its end, in that order (what splitting the whole line by the two
+/// would give, without the splits).
 template <number FT> sub_hyperplane<FT> segment(point<FT> const& p, point<FT> const& q, hyperplane_tag tag = no_tag) {
   auto l = line_through(p, q, tag);
-  auto s = split(whole_line(l), cross_line(l, p, q)).positive;
-  return *split(*s, cross_line(l, q, p)).positive;
+  std::size_t k = dominant_axis(l.n);
+  auto start = cross_line(l, p, q), end = cross_line(l, q, p);
+  auto rs = restrict_to(l.n, k, start.n), re = restrict_to(l.n, k, end.n);
+  return {std::move(l), k, {segment_bound<FT>{std::move(start), std::move(rs)}, segment_bound<FT>{std::move(end), std::move(re)}}};
 }
 
 /// The endpoints of `s` in homogeneous coordinates, start then end (w = 0 at infinity); none for a whole line.
 template <number FT> std::vector<hvec<FT, 3>> homogeneous_endpoints(sub_hyperplane<FT> const& s) {
   std::vector<hvec<FT, 3>> out;
   if (s.bounds.size() < 2) return out;
-  auto const& b0 = s.bounds.front().line();
-  auto const& b1 = s.bounds.back().line();
-  out.push_back(lift(s.support.n, s.axis, {b0[1], FT(-b0[0])}));
-  out.push_back(lift(s.support.n, s.axis, {FT(-b1[1]), b1[0]}));
+  // The restricted point of a bound (b₀, b₁) is (b₁, −b₀) at the start and
+  // its opposite at the end, lifted to the support line: one construction
+  // on integers each.
+  auto const& p = s.support.n;
+  std::size_t k = s.axis;
+  bool flip = detail::restriction_flips(p, k), neg = p.sign_at(k) == sign::negative;
+  auto end = [&](hvec<FT, 2> const& b, bool start) {
+    return construct<3>(
+        [k, flip, neg, start](auto const& P, auto const& B) {
+          using T = std::remove_cvref_t<decltype(P[0])>;
+          std::array<T, 2> x = start ? std::array<T, 2>{B[1], -B[0]} : std::array<T, 2>{-B[1], B[0]};
+          return detail::lift_values<3>(P, k, flip, neg, x);
+        },
+        p, b);
+  };
+  out.reserve(2);
+  out.push_back(end(s.bounds.front().line(), true));
+  out.push_back(end(s.bounds.back().line(), false));
   return out;
 }
 

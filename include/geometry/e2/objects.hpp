@@ -20,6 +20,18 @@ public:
   point() : h_(std::array<FT, 3>{FT(0), FT(0), FT(1)}) {}
   point(FT x, FT y) : h_(std::array<FT, 3>{std::move(x), std::move(y), FT(1)}) {}
 
+  /// The point of homogeneous coordinates `h` (exact fields only; h[2] > 0):
+  /// the same point as (h[0]/h[2], h[1]/h[2]), made from `h`'s integers
+  /// without rational arithmetic; its coordinates are divided out only when
+  /// first read.
+  static point from_homogeneous(hvec<FT, 3> const& h)
+    requires exact_field<FT>
+  {
+    point p;
+    p.h_ = hvec<FT, 3>::from_point_integers(h.integer_view());
+    return p;
+  }
+
   FT const& x() const noexcept { return h_[0]; }
   FT const& y() const noexcept { return h_[1]; }
   hvec<FT, 3> const& homogeneous() const noexcept { return h_; }
