@@ -42,11 +42,39 @@ struct directed_segment {
 
 /// Twice the signed area of `r` (positive when counter-clockwise), exact.
 inline rational twice_signed_area(ring const& r) {
+  // Terms between two vertices of integer coordinates below 2^40 (most input
+  // vertices) are summed in 128 bits, at most 2^40 of them at a time; the
+  // others in rationals.
+  using geometry::detail::int128;
+  constexpr double small = 0x1p40;
+  auto small_integer = [](point2 const& p) {
+    auto const& a = p.homogeneous().approx();
+    return a.integral && a.v[2] == 1 && std::fabs(a.v[0]) < small && std::fabs(a.v[1]) < small;
+  };
   rational s(0);
+  int128 z = 0;
+  std::size_t terms = 0;
+  auto flush = [&] {
+    if (z != 0) {
+      geometry::integer w;
+      geometry::detail::set_integer(w, z);
+      s += rational(w);
+    }
+    z = 0;
+    terms = 0;
+  };
   for (std::size_t i = 0, n = r.size(); i < n; ++i) {
     auto const &a = r[i], &b = r[(i + 1) % n];
-    s += a.x() * b.y() - a.y() * b.x();
+    if (small_integer(a) && small_integer(b)) {
+      auto const &u = a.homogeneous().approx().v, &v = b.homogeneous().approx().v;
+      z += static_cast<int128>(static_cast<std::int64_t>(u[0])) * static_cast<std::int64_t>(v[1]) -
+           static_cast<int128>(static_cast<std::int64_t>(u[1])) * static_cast<std::int64_t>(v[0]);
+      if (++terms == (std::size_t(1) << 40)) flush();
+    } else {
+      s += a.x() * b.y() - a.y() * b.x();
+    }
   }
+  flush();
   return s;
 }
 
@@ -250,7 +278,9 @@ struct box {
 inline box bounds(ring const& r) {
   box b{HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
   for (auto const& p : r) {
-    double x = p.x().convert_to<double>(), y = p.y().convert_to<double>();
+    // Truncated towards zero, which keeps order: a ring's box of doubles
+    // lies in another's when its exact box does.
+    double x = mpq_get_d(p.x().backend().data()), y = mpq_get_d(p.y().backend().data());
     b.x0 = std::min(b.x0, x), b.y0 = std::min(b.y0, y), b.x1 = std::max(b.x1, x), b.y1 = std::max(b.y1, y);
   }
   return b;

@@ -201,4 +201,40 @@ TEST_CASE("E2 Boolean operations: inclusion-exclusion on random star polygons", 
   }
 }
 
+TEST_CASE("Ring areas: integer vertices summed apart, fractions and large integers in rationals", "[boolean][e2]") {
+  // The shoelace sum, term by term in rationals, against twice_signed_area,
+  // which sums the terms between small integer vertices in 128 bits.
+  auto shoelace = [](ring const& r) {
+    Q s(0);
+    for (std::size_t i = 0; i < r.size(); ++i) {
+      auto const &a = r[i], &b = r[(i + 1) % r.size()];
+      s += a.x() * b.y() - a.y() * b.x();
+    }
+    return s;
+  };
+  Q const big = Q(geometry::integer(1) << 40), huge = Q(geometry::integer(1) << 70);
+  for (int t = 0; t < 200; ++t) {
+    ring r;
+    auto n = test::uniform(3, 40);
+    for (long i = 0; i < n; ++i) {
+      auto kind = test::uniform(0, 5);
+      auto coordinate = [&] {
+        switch (kind) {
+        case 0: return test::random_decimal();                       // a fraction
+        case 1: return big - 1 - test::uniform(0, 5);                // just below 2^40
+        case 2: return big + test::random_integer();                 // at or past 2^40
+        case 3: return huge * test::random_integer();                // far past it
+        default: return test::random_integer(1000000);               // small integers
+        }
+      };
+      r.push_back(P(coordinate(), kind == 1 ? -coordinate() : coordinate()));
+    }
+    CHECK(boolean::twice_signed_area(r) == shoelace(r));
+  }
+  // Integer vertices only, near the limit, a long ring: every term in 128 bits.
+  ring square{P(-big + 1, -big + 1), P(big - 1, -big + 1), P(big - 1, big - 1), P(-big + 1, big - 1)};
+  CHECK(boolean::twice_signed_area(square) == 2 * (2 * big - 2) * (2 * big - 2));
+  CHECK(boolean::twice_signed_area(square) == shoelace(square));
+}
+
 } // namespace boolean_polygons_tests
