@@ -40,6 +40,20 @@ struct directed_segment {
   point2 from, to;
 };
 
+namespace detail {
+/// The sum of `terms` (which it overwrites), added pairwise along a balanced
+/// tree.  Fractions with unrelated denominators make ever longer partial
+/// sums: added in order, n of them cost about n² times a term's length;
+/// pairwise, about n log n.
+inline rational balanced_sum(std::vector<rational>& terms) {
+  std::size_t const n = terms.size();
+  if (n == 0) return rational(0);
+  for (std::size_t step = 1; step < n; step *= 2)
+    for (std::size_t i = 0; i + step < n; i += 2 * step) terms[i] += terms[i + step];
+  return terms[0];
+}
+} // namespace detail
+
 /// Twice the signed area of `r` (positive when counter-clockwise), exact.
 inline rational twice_signed_area(ring const& r) {
   // Terms between two vertices of integer coordinates below 2^40 (most input
@@ -51,14 +65,14 @@ inline rational twice_signed_area(ring const& r) {
     auto const& a = p.homogeneous().approx();
     return a.integral && a.v[2] == 1 && std::fabs(a.v[0]) < small && std::fabs(a.v[1]) < small;
   };
-  rational s(0);
+  std::vector<rational> fractions;
   int128 z = 0;
   std::size_t terms = 0;
   auto flush = [&] {
     if (z != 0) {
       geometry::integer w;
       geometry::detail::set_integer(w, z);
-      s += rational(w);
+      fractions.emplace_back(w);
     }
     z = 0;
     terms = 0;
@@ -71,11 +85,11 @@ inline rational twice_signed_area(ring const& r) {
            static_cast<int128>(static_cast<std::int64_t>(u[1])) * static_cast<std::int64_t>(v[0]);
       if (++terms == (std::size_t(1) << 40)) flush();
     } else {
-      s += a.x() * b.y() - a.y() * b.x();
+      fractions.push_back(a.x() * b.y() - a.y() * b.x());
     }
   }
   flush();
-  return s;
+  return detail::balanced_sum(fractions);
 }
 
 /// The signed area of `r` (positive when counter-clockwise), exact.
@@ -83,12 +97,12 @@ inline rational signed_area(ring const& r) { return twice_signed_area(r) / 2; }
 
 /// The area of a multipolygon, exact (its rings are assumed valid).
 inline rational area(multipolygon const& m) {
-  rational s(0);
+  std::vector<rational> rings;
   for (auto const& p : m) {
-    s += signed_area(p.outer);
-    for (auto const& h : p.holes) s += signed_area(h);
+    rings.push_back(twice_signed_area(p.outer));
+    for (auto const& h : p.holes) rings.push_back(twice_signed_area(h));
   }
-  return s;
+  return detail::balanced_sum(rings) / 2;
 }
 
 /// Where a point lies with respect to a closed ring.
