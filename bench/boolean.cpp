@@ -1,11 +1,14 @@
 // Exact Boolean operations in the plane (boolean::operand_of, combine)
-// against Boost.Geometry's union_ and intersection in double precision, on the
-// same inputs:
+// against the libraries people use instead, on the same inputs in the same
+// run: Boost.Geometry (double), Clipper 1 (64-bit integers) and CGAL's
+// Polygon_set_2 on the exact kernel Epeck, the last two when their Debian
+// packages are present at build time (scripts/setup --bench).  Inputs:
 //   star         two random star-shaped polygons of n vertices each, integer
 //                coordinates, radii uniform in [0.3R, R], different centres
 //                and seeds, heavily overlapping: long thin spikes whose
 //                boundaries cross thousands of times from n = 1000 on;
-//   star-narrow  the same with radii in [0.9R, R]: far fewer crossings;
+//   star-narrow  the same with radii in [0.9R, R]: two random n-gons hugging
+//                one circle, far fewer crossings;
 //   grid         K×K unit squares at (2i, 2j) against the same grid shifted
 //                by (1/2, 1/2): every square overlaps exactly one square of
 //                the copy.
@@ -13,24 +16,17 @@
 // The genbsp time of a case is the whole job from exact input rings to valid
 // output rings: operand_of(A) + operand_of(B) (build), the boundaries
 // classified against both trees (classify) and the rings assembled (output).
-// The Boost.Geometry time is that of bg::union_ or
-// bg::intersection alone, on multi-polygons converted to double and passed
-// through bg::correct beforehand.  Destroying the results is not timed.
+// A peer's time is its own whole job from its input type (boolean_peers.hpp;
+// each peer's file says what is timed).  Converting the inputs and
+// destroying the results is not timed.
 //
 // Each library runs each case in a child process, so that a run that exceeds
-// the time limit can be stopped and recorded as not finished (both libraries
-// grow faster than linearly on some of these inputs).  Progress goes to
+// the time limit can be stopped and recorded as not finished (every library
+// grows faster than linearly on some of these inputs).  Progress goes to
 // stderr, the table to stdout, the results to JSON and CSV (rewritten after
 // every case, so an interrupted run keeps what it measured).
 #include <boolean/polygons.hpp>
 
-// Boost 1.74's Geometry includes one of Boost's own deprecated headers, which
-// would print a message at every build.
-#define BOOST_ALLOW_DEPRECATED_HEADERS
-#include <boost/geometry.hpp>
-#include <boost/geometry/geometries/multi_polygon.hpp>
-#include <boost/geometry/geometries/point_xy.hpp>
-#include <boost/geometry/geometries/polygon.hpp>
 #include <boost/version.hpp>
 
 #include <gmp.h>
@@ -63,21 +59,18 @@
 #include <thread>
 #include <vector>
 
+#include "boolean_peers.hpp"
 #include "common.hpp"
 
 namespace {
 
-namespace bg = boost::geometry;
+namespace peers = bench::boolean_peers;
 using boolean::multipolygon;
 using boolean::ring;
 using boolean::set_op;
 using geometry::rational;
 using P = boolean::point2;
 using clock_type = std::chrono::steady_clock;
-
-using bpoint = bg::model::d2::point_xy<double>;
-using bpolygon = bg::model::polygon<bpoint>; // clockwise outer rings, closed (Boost's defaults)
-using bmulti = bg::model::multi_polygon<bpolygon>;
 
 double seconds_since(clock_type::time_point t0) {
   return std::chrono::duration<double>(clock_type::now() - t0).count();
@@ -93,10 +86,11 @@ struct options {
   std::vector<std::size_t> stars{100, 1000, 10000, 100000};
   std::vector<std::size_t> narrow_stars{100, 1000, 10000, 100000};
   std::vector<std::size_t> grids{10, 30, 100};
-  bool genbsp = true, boost = true;        ///< the libraries to run
+  bool genbsp = true;                      ///< whether genbsp runs
+  std::vector<peers::peer> peers;          ///< the peers that run (all built ones unless --libraries)
   bool union_ = true, intersection = true; ///< the operations to run
   /// Seconds one run may take before it is stopped.  With the default sizes
-  /// four runs per library reach it, which keeps the whole run near 9 minutes.
+  /// a few runs per library reach it.
   double limit = 45;
   double long_run = 10;     ///< a run at least this long is not repeated
   int repetitions = 3;      ///< runs per case at least (unless long); the median is reported
@@ -104,24 +98,38 @@ struct options {
   double min_total = 0.25;  ///< short cases are repeated until their runs add up to this
 };
 
+std::string library_names() {
+  std::string s = "genbsp";
+  for (auto const& p : peers::available()) s += "," + p.name;
+  return s;
+}
+
 void print_help() {
-  std::puts("Usage: bench_boolean [--quick] [--json FILE] [--csv FILE] [--seed N] [--limit S]\n"
-            "                     [--stars N,...] [--narrow-stars N,...] [--grids K,...]\n"
-            "                     [--libraries genbsp,boost] [--operations union,intersection]\n"
-            "\n"
-            "Times genbsp's exact Boolean operations in the plane (operand_of each operand,\n"
-            "combine) against Boost.Geometry's union_ and intersection in double on\n"
-            "the same input: two random star polygons of n vertices each (radii uniform\n"
-            "in [0.3R, R]; narrow stars: in [0.9R, R]), and a K x K grid of unit squares\n"
-            "at (2i, 2j) against its copy shifted by (1/2, 1/2).  Reports the median time\n"
-            "of 3 runs (more for cases under 0.25 s, one for cases over 10 s), the output\n"
-            "size (polygons, rings, vertices), the area (exact for genbsp), the time\n"
-            "ratio genbsp / Boost and the relative area difference.\n"
-            "Each library runs each case in a child process, stopped after the limit.\n"
+  std::printf("Usage: bench_boolean [--quick] [--json FILE] [--csv FILE] [--seed N] [--limit S]\n"
+              "                     [--stars N,...] [--narrow-stars N,...] [--grids K,...]\n"
+              "                     [--libraries L,...] [--operations union,intersection]\n"
+              "\n"
+              "Times genbsp's exact Boolean operations in the plane (operand_of each operand,\n"
+              "combine) against other libraries' union and intersection on the same input:\n"
+              "two random star polygons of n vertices each (radii uniform in [0.3R, R];\n"
+              "narrow stars: in [0.9R, R]), and a K x K grid of unit squares at (2i, 2j)\n"
+              "against its copy shifted by (1/2, 1/2).  Reports the median time of 3 runs\n"
+              "(more for cases under 0.25 s, one for cases over 10 s), the output size\n"
+              "(polygons, rings, vertices), the area (exact for genbsp), whether an inexact\n"
+              "library's output is valid (bg::is_valid), and genbsp's time over the fastest\n"
+              "other library's.  Each library runs each case in a child process, stopped\n"
+              "after the limit.\n"
+              "\n"
+              "Libraries in this build: %s\n",
+              library_names().c_str());
+  for (auto const& p : peers::available())
+    std::printf("  %-8s %s: %s\n", p.name.c_str(), p.label.c_str(), p.timed.c_str());
+  std::puts("(Clipper and CGAL are built in when libpolyclipping-dev and libcgal-dev are\n"
+            "installed at configure time: scripts/setup --bench.)\n"
             "\n"
             "  --quick          stars of 100 and 1000 vertices, grids 10 and 30, limit 10 s\n"
             "  --json FILE      write the results as JSON to FILE\n"
-            "  --csv FILE       write the results as CSV to FILE\n"
+            "  --csv FILE       write the results as CSV to FILE (one line per case and library)\n"
             "  --seed N         seed of the star polygons (default 20261129)\n"
             "  --limit S        stop a run after S seconds: not finished (default 45); larger\n"
             "                   sizes of the same library, family and operation are then skipped\n"
@@ -129,7 +137,7 @@ void print_help() {
             "                   0 for none (also in the next two)\n"
             "  --narrow-stars LIST  narrow star sizes (default 100,1000,10000,100000)\n"
             "  --grids LIST     grid sides K (default 10,30,100)\n"
-            "  --libraries L    genbsp, boost or both (default genbsp,boost); for profiling\n"
+            "  --libraries L    some of the libraries above, comma-separated (default all)\n"
             "  --operations L   union, intersection or both (default union,intersection)\n"
             "  --help           this text");
 }
@@ -151,9 +159,22 @@ std::optional<std::vector<std::size_t>> parse_list(std::string_view v) {
   return out;
 }
 
+/// The items of a comma-separated list.
+std::vector<std::string> split(std::string_view v) {
+  std::vector<std::string> out;
+  std::string list(v);
+  for (std::size_t pos = 0; pos <= list.size();) {
+    std::size_t comma = std::min(list.find(',', pos), list.size());
+    out.push_back(list.substr(pos, comma - pos));
+    pos = comma + 1;
+  }
+  return out;
+}
+
 /// Parses the command line; returns the exit code to stop with, if any.
 std::optional<int> parse_options(int argc, char** argv, options& o) {
   bool stars_given = false, narrow_given = false, grids_given = false, limit_given = false;
+  o.peers = peers::available();
   for (int i = 1; i < argc; ++i) {
     std::string_view a = argv[i];
     if (a == "--help" || a == "-h") {
@@ -174,8 +195,8 @@ std::optional<int> parse_options(int argc, char** argv, options& o) {
       return 2;
     }
     std::string_view v = argv[++i];
-    auto bad = [&](char const* what) {
-      std::fprintf(stderr, "bench_boolean: %s needs %s, not '%s'\n", argv[i - 1], what, argv[i]);
+    auto bad = [&](std::string const& what) {
+      std::fprintf(stderr, "bench_boolean: %s needs %s, not '%s'\n", argv[i - 1], what.c_str(), argv[i]);
       return 2;
     };
     if (a == "--json") {
@@ -193,22 +214,36 @@ std::optional<int> parse_options(int argc, char** argv, options& o) {
       if (v.empty() || *end != '\0' || !(s > 0)) return bad("a positive number of seconds");
       o.limit = s;
       limit_given = true;
-    } else if (a == "--libraries" || a == "--operations") {
-      bool lib = a == "--libraries";
-      bool& first = lib ? o.genbsp : o.union_;
-      bool& second = lib ? o.boost : o.intersection;
-      first = second = false;
-      std::string list(v);
-      for (std::size_t pos = 0; pos <= list.size();) {
-        std::size_t comma = std::min(list.find(',', pos), list.size());
-        std::string item = list.substr(pos, comma - pos);
-        if (item == (lib ? "genbsp" : "union"))
-          first = true;
-        else if (item == (lib ? "boost" : "intersection"))
-          second = true;
+    } else if (a == "--libraries") {
+      auto built = peers::available();
+      o.genbsp = false;
+      o.peers.clear();
+      for (auto const& item : split(v)) {
+        if (item == "genbsp") {
+          o.genbsp = true;
+          continue;
+        }
+        auto p = std::find_if(built.begin(), built.end(), [&](peers::peer const& q) { return q.name == item; });
+        if (p == built.end()) {
+          if (item == "clipper" || item == "cgal")
+            std::fprintf(stderr,
+                         "bench_boolean: this build has no %s (install libpolyclipping-dev and libcgal-dev with "
+                         "scripts/setup --bench, then configure again)\n",
+                         item.c_str());
+          return bad("some of " + library_names());
+        }
+        if (std::none_of(o.peers.begin(), o.peers.end(), [&](peers::peer const& q) { return q.name == item; }))
+          o.peers.push_back(*p);
+      }
+    } else if (a == "--operations") {
+      o.union_ = o.intersection = false;
+      for (auto const& item : split(v)) {
+        if (item == "union")
+          o.union_ = true;
+        else if (item == "intersection")
+          o.intersection = true;
         else
-          return bad(lib ? "genbsp, boost or genbsp,boost" : "union, intersection or union,intersection");
-        pos = comma + 1;
+          return bad("union, intersection or union,intersection");
       }
     } else {
       auto l = parse_list(v);
@@ -289,23 +324,25 @@ std::size_t ring_count(multipolygon const& m) {
   return n;
 }
 
-bmulti to_boost(multipolygon const& m) {
+
+/// `m` in double for the peers; every coordinate converts exactly (checked).
+peers::polygons to_plain(multipolygon const& m) {
   auto conv = [](ring const& r) {
-    std::vector<bpoint> out;
-    for (auto const& p : r) out.emplace_back(p.x().convert_to<double>(), p.y().convert_to<double>());
+    peers::path out;
+    for (auto const& p : r) {
+      double x = p.x().convert_to<double>(), y = p.y().convert_to<double>();
+      if (rational(x) != p.x() || rational(y) != p.y())
+        throw std::logic_error("bench_boolean: an input coordinate is not exact in double");
+      out.push_back({x, y});
+    }
     return out;
   };
-  bmulti out;
+  peers::polygons out;
   for (auto const& p : m) {
-    bpolygon q;
-    for (auto const& pt : conv(p.outer)) q.outer().push_back(pt);
-    for (auto const& h : p.holes) {
-      q.inners().emplace_back();
-      for (auto const& pt : conv(h)) q.inners().back().push_back(pt);
-    }
+    peers::polygon q{conv(p.outer), {}};
+    for (auto const& h : p.holes) q.holes.push_back(conv(h));
     out.push_back(std::move(q));
   }
-  bg::correct(out); // Boost's orientation (clockwise outer rings) and closed rings
   return out;
 }
 
@@ -328,8 +365,8 @@ struct measurement {
   std::size_t area_bits = 0; ///< genbsp: bits of the exact area's numerator and denominator
   /// genbsp: interior nodes and depth of the trees of A, of B and of the result.
   std::size_t tree_nodes[3] = {0, 0, 0}, tree_depth[3] = {0, 0, 0};
-  bool valid = true;          ///< Boost: bg::is_valid of its output
-  std::string invalid_reason; ///< Boost: why bg::is_valid refuses its output
+  bool valid = true;          ///< an inexact peer: bg::is_valid of its output
+  std::string invalid_reason; ///< why bg::is_valid refuses it
 };
 
 double median(std::vector<double> v) {
@@ -355,8 +392,12 @@ using bench::write_all;
 /// Lines a measuring child process sends: "run SECONDS [BUILD MERGE OUTPUT]"
 /// after each run, "result POLYGONS RINGS VERTICES AREA EXTRA" after the
 /// first (EXTRA: bits of genbsp's exact area, or whether Boost's output is
+
+/// Lines a measuring child process sends: "run SECONDS [BUILD MERGE OUTPUT]"
+/// after each run, "result POLYGONS RINGS VERTICES AREA EXTRA" after the
+/// first (EXTRA: bits of genbsp's exact area, or whether a peer's output is
 /// valid), for genbsp also "trees NODES DEPTH …" (A, B, result), for an
-/// invalid Boost output "invalid REASON", then "done", or "error MESSAGE".
+/// invalid output "invalid REASON", then "done", or "error MESSAGE".
 void send_run(int fd, double total, double build = -1, double merge = -1, double output = -1) {
   char line[160];
   std::snprintf(line, sizeof line, "run %.9g %.9g %.9g %.9g\n", total, build, merge, output);
@@ -401,33 +442,30 @@ void genbsp_child(int fd, set_op op, multipolygon const& a, multipolygon const& 
   }
 }
 
-/// The Boost.Geometry runs of one case (in a child process).
-void boost_child(int fd, set_op op, bmulti const& a, bmulti const& b, options const& o) {
+/// One peer's runs of one case (in a child process).
+void peer_child(int fd, peers::peer const& peer, set_op op, peers::polygons const& a, peers::polygons const& b,
+                options const& o) {
+  auto job = peer.prepare(op == set_op::union_ ? peers::operation::union_ : peers::operation::intersection, a, b);
   std::vector<double> runs;
   while (another_run(runs, o)) {
-    bmulti out;
     auto t0 = clock_type::now();
-    if (op == set_op::union_)
-      bg::union_(a, b, out);
-    else
-      bg::intersection(a, b, out);
+    job->run();
     runs.push_back(seconds_since(t0));
     send_run(fd, runs.back());
     if (runs.size() == 1) {
+      auto out = job->result();
       std::size_t rings = 0, vertices = 0;
-      for (auto const& p : out) {
-        rings += 1 + p.inners().size();
-        vertices += p.outer().size() - 1; // closed rings repeat their first point
-        for (auto const& h : p.inners()) vertices += h.size() - 1;
+      for (auto const& p : out.shape) {
+        rings += 1 + p.holes.size();
+        vertices += p.outer.size();
+        for (auto const& h : p.holes) vertices += h.size();
       }
       std::string why;
-      bool valid = bg::is_valid(out, why);
-      send_result(fd, out.size(), rings, vertices, bg::area(out), valid ? 1 : 0);
-      if (!valid) {
-        std::replace(why.begin(), why.end(), '\n', ' ');
-        write_all(fd, "invalid " + why + "\n");
-      }
+      bool valid = peer.exact || peers::valid(out.shape, why);
+      send_result(fd, out.shape.size(), rings, vertices, out.area, valid ? 1 : 0);
+      if (!valid) write_all(fd, "invalid " + why + "\n");
     }
+    job->clear();
   }
 }
 
@@ -435,7 +473,7 @@ void boost_child(int fd, set_op op, bmulti const& a, bmulti const& b, options co
 /// report; stops the child when it stays silent for longer than the limit
 /// (one run, or the checks after the first).  Runs completed before a stop
 /// still count.
-template <class Body> measurement run_in_child(bool exact, options const& o, Body body) {
+template <class Body> measurement run_in_child(bool genbsp, options const& o, Body body) {
   measurement m;
   bool got_result = false;
   auto end = bench::run_in_child(o.limit, body, [&](std::string const& kind, std::istringstream& in) {
@@ -443,7 +481,7 @@ template <class Body> measurement run_in_child(bool exact, options const& o, Bod
       double total = 0, build = 0, merge = 0, output = 0;
       in >> total >> build >> merge >> output;
       m.runs.push_back(total);
-      if (exact) {
+      if (genbsp) {
         m.build.push_back(build);
         m.merge.push_back(merge);
         m.output.push_back(output);
@@ -452,7 +490,7 @@ template <class Body> measurement run_in_child(bool exact, options const& o, Bod
     } else if (kind == "result") {
       std::size_t extra = 0;
       in >> m.out.polygons >> m.out.rings >> m.out.vertices >> m.out.area >> extra;
-      if (exact)
+      if (genbsp)
         m.area_bits = extra;
       else
         m.valid = extra != 0;
@@ -479,19 +517,30 @@ struct row {
   std::string op;                                     ///< "union" or "intersection"
   std::size_t size = 0;                               ///< vertices per star, or grid side K
   std::size_t input_vertices = 0, input_polygons = 0; ///< both operands together
-  measurement genbsp, boost;
-  bool boost_input_valid = true;
+  measurement genbsp;
+  std::vector<measurement> peers; ///< in the order of options::peers
+  bool input_valid = true;        ///< bg::is_valid of both operands
 };
 
-std::optional<double> ratio(row const& r) {
-  if (r.genbsp.status != "ok" || r.boost.status != "ok" || r.boost.seconds <= 0) return std::nullopt;
-  return r.genbsp.seconds / r.boost.seconds;
+/// genbsp's time over `m`'s, when both finished.
+std::optional<double> ratio(measurement const& g, measurement const& m) {
+  if (g.status != "ok" || m.status != "ok" || m.seconds <= 0) return std::nullopt;
+  return g.seconds / m.seconds;
 }
 
-std::optional<double> area_difference(row const& r) {
-  if (r.genbsp.status != "ok" || r.boost.status != "ok") return std::nullopt;
-  if (r.genbsp.out.area == 0) return r.boost.out.area == 0 ? 0.0 : 1.0;
-  return std::abs(r.boost.out.area - r.genbsp.out.area) / std::abs(r.genbsp.out.area);
+/// |area of `m` − exact area| / exact area, when both finished.
+std::optional<double> area_difference(measurement const& g, measurement const& m) {
+  if (g.status != "ok" || m.status != "ok") return std::nullopt;
+  if (g.out.area == 0) return m.out.area == 0 ? 0.0 : 1.0;
+  return std::abs(m.out.area - g.out.area) / std::abs(g.out.area);
+}
+
+/// The index of the fastest peer that finished, if any.
+std::optional<std::size_t> fastest(row const& r) {
+  std::optional<std::size_t> best;
+  for (std::size_t i = 0; i < r.peers.size(); ++i)
+    if (r.peers[i].status == "ok" && (!best || r.peers[i].seconds < r.peers[*best].seconds)) best = i;
+  return best;
 }
 
 std::string cpu_model() {
@@ -541,12 +590,12 @@ std::string json_list(std::vector<double> const& v) {
   return s + "]";
 }
 
-std::string json_measurement(measurement const& m, bool exact) {
+std::string json_measurement(measurement const& m, bool genbsp) {
   std::ostringstream j;
   bool ok = m.status == "ok";
   j << "{\"status\": " << json_string(m.status) << ", \"runs\": " << json_list(m.runs)
     << ", \"seconds\": " << (m.runs.empty() ? "null" : number(m.seconds));
-  if (exact)
+  if (genbsp)
     j << ", \"build_seconds\": " << (m.runs.empty() ? "null" : number(m.build_s))
       << ", \"merge_seconds\": " << (m.runs.empty() ? "null" : number(m.merge_s))
       << ", \"output_seconds\": " << (m.runs.empty() ? "null" : number(m.output_s))
@@ -555,7 +604,7 @@ std::string json_measurement(measurement const& m, bool exact) {
   if (ok) {
     j << ", \"polygons\": " << m.out.polygons << ", \"rings\": " << m.out.rings << ", \"vertices\": " << m.out.vertices
       << ", \"area\": " << number(m.out.area, 17);
-    if (exact)
+    if (genbsp)
       j << ", \"area_exact_bits\": " << m.area_bits << ", \"tree_nodes\": {\"a\": " << m.tree_nodes[0]
         << ", \"b\": " << m.tree_nodes[1] << ", \"result\": " << m.tree_nodes[2]
         << "}, \"tree_depth\": {\"a\": " << m.tree_depth[0] << ", \"b\": " << m.tree_depth[1]
@@ -567,7 +616,6 @@ std::string json_measurement(measurement const& m, bool exact) {
   return j.str() + "}";
 }
 
-/// Writes `text` to `file` through a temporary file, so readers never see a partial file.
 bool write_file(std::string const& file, std::string const& text) {
   std::filesystem::path target(file), tmp = target;
   tmp += ".tmp";
@@ -597,6 +645,7 @@ struct run_info {
   bool finished = false;
 };
 
+
 std::string json_results(options const& o, std::vector<row> const& rows, run_info const& info) {
   std::ostringstream j;
   j << "{\n  \"benchmark\": \"bench_boolean\",\n";
@@ -615,80 +664,94 @@ std::string json_results(options const& o, std::vector<row> const& rows, run_inf
        "centres (0, 0) and (150000, 100000)\""
     << ",\n    \"star-narrow\": \"the same with radii uniform in [9e5, 1e6]\""
     << ",\n    \"grid\": \"K x K unit squares [2i, 2i+1] x [2j, 2j+1] against the same squares shifted by (1/2, 1/2)\""
+    << ",\n    \"genbsp\": " << (o.genbsp ? "true" : "false")
     << ",\n    \"genbsp_time\": \"operand_of(A) + operand_of(B) + merged_boundary + assemble (= boolean::combine)\""
-    << ",\n    \"boost_time\": \"bg::union_ or bg::intersection on corrected double multi_polygons\"},\n";
+    << ",\n    \"peers\": [";
+  for (std::size_t i = 0; i < o.peers.size(); ++i) {
+    auto const& p = o.peers[i];
+    j << (i ? ",\n      " : "\n      ") << "{\"name\": " << json_string(p.name) << ", \"label\": " << json_string(p.label)
+      << ", \"exact\": " << (p.exact ? "true" : "false") << ", \"time\": " << json_string(p.timed) << "}";
+  }
+  j << "]},\n";
   j << "  \"results\": [\n";
   for (std::size_t i = 0; i < rows.size(); ++i) {
     auto const& r = rows[i];
     j << "    {\"family\": " << json_string(r.family) << ", \"operation\": " << json_string(r.op)
       << ", \"size\": " << r.size << ", \"input_vertices\": " << r.input_vertices
-      << ", \"input_polygons\": " << r.input_polygons
-      << ", \"boost_input_valid\": " << (r.boost_input_valid ? "true" : "false") << ",\n"
-      << "     \"genbsp\": " << json_measurement(r.genbsp, true) << ",\n"
-      << "     \"boost\": " << json_measurement(r.boost, false) << ",\n"
-      << "     \"genbsp_over_boost\": " << json_optional(ratio(r))
-      << ", \"area_relative_difference\": " << json_optional(area_difference(r)) << "}"
+      << ", \"input_polygons\": " << r.input_polygons << ", \"input_valid\": " << (r.input_valid ? "true" : "false")
+      << ",\n     \"genbsp\": " << json_measurement(r.genbsp, true) << ",\n     \"peers\": {";
+    for (std::size_t k = 0; k < r.peers.size(); ++k) {
+      auto m = json_measurement(r.peers[k], false);
+      m.pop_back(); // the closing brace: two more fields
+      j << (k ? ",\n       " : "\n       ") << json_string(o.peers[k].name) << ": " << m
+        << ", \"genbsp_over\": " << json_optional(ratio(r.genbsp, r.peers[k]))
+        << ", \"area_relative_difference\": " << json_optional(area_difference(r.genbsp, r.peers[k])) << "}";
+    }
+    auto f = fastest(r);
+    j << "},\n     \"fastest_peer\": " << (f ? json_string(o.peers[*f].name) : "null")
+      << ", \"genbsp_over_fastest\": " << json_optional(f ? ratio(r.genbsp, r.peers[*f]) : std::nullopt) << "}"
       << (i + 1 < rows.size() ? "," : "") << "\n";
   }
   j << "  ]\n}\n";
   return j.str();
 }
 
-std::string csv_results(std::vector<row> const& rows) {
+/// One line per case and library.
+std::string csv_results(options const& o, std::vector<row> const& rows) {
   std::ostringstream c;
-  c << "family,operation,size,input_vertices,input_polygons,"
-       "genbsp_status,genbsp_runs,genbsp_seconds,genbsp_build_seconds,genbsp_merge_seconds,genbsp_output_seconds,"
-       "genbsp_polygons,genbsp_rings,genbsp_vertices,genbsp_area,"
-       "boost_status,boost_runs,boost_seconds,boost_polygons,boost_rings,boost_vertices,boost_area,boost_output_valid,"
-       "genbsp_over_boost,area_relative_difference\n";
+  c << "family,operation,size,input_vertices,input_polygons,library,status,runs,seconds,"
+       "build_seconds,merge_seconds,output_seconds,polygons,rings,vertices,area,output_valid,"
+       "genbsp_over_this,area_relative_difference\n";
   auto opt = [](std::optional<double> x) { return x ? number(*x) : std::string(); };
+  auto quoted = [](std::string s) {
+    std::string out = "\"";
+    for (char ch : s) out += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+    return out + "\"";
+  };
   for (auto const& r : rows) {
-    auto const &g = r.genbsp, &b = r.boost;
-    bool gok = g.status == "ok", bok = b.status == "ok";
-    auto quoted = [](std::string s) {
-      std::string out = "\"";
-      for (char ch : s) out += ch == '"' ? std::string("\"\"") : std::string(1, ch);
-      return out + "\"";
+    auto line = [&](std::string const& name, measurement const& m, bool genbsp) {
+      bool ok = m.status == "ok";
+      bool has = !m.runs.empty();
+      c << r.family << ',' << r.op << ',' << r.size << ',' << r.input_vertices << ',' << r.input_polygons << ','
+        << name << ',' << quoted(m.status) << ',' << m.runs.size() << ',' << (has ? number(m.seconds) : "") << ','
+        << (genbsp && has ? number(m.build_s) : "") << ',' << (genbsp && has ? number(m.merge_s) : "") << ','
+        << (genbsp && has ? number(m.output_s) : "") << ',';
+      if (ok)
+        c << m.out.polygons << ',' << m.out.rings << ',' << m.out.vertices << ',' << number(m.out.area, 17) << ','
+          << (m.valid ? "true" : "false") << ',';
+      else
+        c << ",,,,,";
+      c << (genbsp ? "" : opt(ratio(r.genbsp, m))) << ',' << (genbsp ? "" : opt(area_difference(r.genbsp, m)))
+        << '\n';
     };
-    c << r.family << ',' << r.op << ',' << r.size << ',' << r.input_vertices << ',' << r.input_polygons << ','
-      << quoted(g.status) << ',' << g.runs.size() << ',' << (g.runs.empty() ? "" : number(g.seconds)) << ','
-      << (g.runs.empty() ? "" : number(g.build_s)) << ',' << (g.runs.empty() ? "" : number(g.merge_s)) << ','
-      << (g.runs.empty() ? "" : number(g.output_s)) << ',';
-    if (gok)
-      c << g.out.polygons << ',' << g.out.rings << ',' << g.out.vertices << ',' << number(g.out.area, 17) << ',';
-    else
-      c << ",,,,";
-    c << quoted(b.status) << ',' << b.runs.size() << ',' << (b.runs.empty() ? "" : number(b.seconds)) << ',';
-    if (bok)
-      c << b.out.polygons << ',' << b.out.rings << ',' << b.out.vertices << ',' << number(b.out.area, 17) << ','
-        << (b.valid ? "true" : "false") << ',';
-    else
-      c << ",,,,,";
-    c << opt(ratio(r)) << ',' << opt(area_difference(r)) << '\n';
+    if (o.genbsp) line("genbsp", r.genbsp, true);
+    for (std::size_t k = 0; k < r.peers.size(); ++k) line(o.peers[k].name, r.peers[k], false);
   }
   return c.str();
 }
 
-void print_header() {
-  std::printf("%-11s %-12s %6s %7s | %9s %9s %9s %9s %18s | %9s %18s | %8s %9s\n", "family", "operation", "size",
-              "in vert", "genbsp s", "build", "merge", "output", "out P/R/V", "boost s", "out P/R/V", "ratio",
-              "area diff");
+void print_header(options const& o) {
+  std::printf("%-11s %-12s %6s %7s | %9s %9s %9s %9s %18s", "family", "operation", "size", "in vert", "genbsp s",
+              "build", "merge", "output", "out P/R/V");
+  for (auto const& p : o.peers) std::printf(" | %9s %18s", (p.name + " s").c_str(), "out P/R/V");
+  std::printf(" | %8s %9s\n", "fastest", "ratio");
 }
 
 std::string sizes(measurement const& m) {
   if (m.status != "ok") return m.status.substr(0, 18);
-  return std::to_string(m.out.polygons) + "/" + std::to_string(m.out.rings) + "/" + std::to_string(m.out.vertices);
+  return std::to_string(m.out.polygons) + "/" + std::to_string(m.out.rings) + "/" + std::to_string(m.out.vertices) +
+         (m.valid ? "" : "!");
 }
 
-void print_row(row const& r) {
+void print_row(options const& o, row const& r) {
   auto s = [](measurement const& m, double x) { return m.runs.empty() ? std::string("-") : number(x, 3); };
-  auto q = ratio(r);
-  auto d = area_difference(r);
-  std::printf("%-11s %-12s %6zu %7zu | %9s %9s %9s %9s %18s | %9s %18s | %8s %9s\n", r.family.c_str(), r.op.c_str(),
-              r.size, r.input_vertices, s(r.genbsp, r.genbsp.seconds).c_str(), s(r.genbsp, r.genbsp.build_s).c_str(),
-              s(r.genbsp, r.genbsp.merge_s).c_str(), s(r.genbsp, r.genbsp.output_s).c_str(), sizes(r.genbsp).c_str(),
-              s(r.boost, r.boost.seconds).c_str(), sizes(r.boost).c_str(), q ? (number(*q, 3) + "x").c_str() : "-",
-              d ? number(*d, 2).c_str() : "-");
+  std::printf("%-11s %-12s %6zu %7zu | %9s %9s %9s %9s %18s", r.family.c_str(), r.op.c_str(), r.size,
+              r.input_vertices, s(r.genbsp, r.genbsp.seconds).c_str(), s(r.genbsp, r.genbsp.build_s).c_str(),
+              s(r.genbsp, r.genbsp.merge_s).c_str(), s(r.genbsp, r.genbsp.output_s).c_str(), sizes(r.genbsp).c_str());
+  for (auto const& m : r.peers) std::printf(" | %9s %18s", s(m, m.seconds).c_str(), sizes(m).c_str());
+  auto f = fastest(r);
+  auto q = f ? ratio(r.genbsp, r.peers[*f]) : std::nullopt;
+  std::printf(" | %8s %9s\n", f ? o.peers[*f].name.c_str() : "-", q ? (number(*q, 3) + "x").c_str() : "-");
   std::fflush(stdout);
 }
 
@@ -703,21 +766,24 @@ int main(int argc, char** argv) {
   info.started = utc_now();
   info.load_start = load_average();
   auto start = clock_type::now();
-  std::printf("bench_boolean: %s, %u hardware threads, %s, Boost %s, GMP %s\n", cpu_model().c_str(),
-              std::thread::hardware_concurrency(), compiler().c_str(), BOOST_LIB_VERSION, gmp_version);
-  std::printf("load average %s at the start; seed %llu; limit %g s per run%s\n", info.load_start.c_str(),
+  std::printf("bench_boolean: %s, %u hardware threads, %s, GMP %s\n", cpu_model().c_str(),
+              std::thread::hardware_concurrency(), compiler().c_str(), gmp_version);
+  std::printf("libraries:%s", o.genbsp ? " genbsp (exact)" : "");
+  for (auto const& p : o.peers) std::printf(" %s%s", p.label.c_str(), p.exact ? " (exact)" : "");
+  std::printf("\nload average %s at the start; seed %llu; limit %g s per run%s\n", info.load_start.c_str(),
               static_cast<unsigned long long>(o.seed), o.limit, o.quick ? " (--quick)" : "");
   if (!optimised()) std::printf("warning: built without optimisation; the numbers mean little\n");
-  std::printf("times in seconds (median); genbsp = build (operand_of both) + classify (merged_boundary) + output (assemble); "
-              "ratio = genbsp / Boost; area diff = |Boost - exact| / exact\n\n");
-  print_header();
+  std::printf("times in seconds (median); genbsp = build (operand_of both) + classify (merged_boundary) + output "
+              "(assemble); P/R/V = output polygons/rings/vertices, ! = invalid (bg::is_valid); ratio = genbsp / "
+              "the fastest other library\n\n");
+  print_header(o);
 
   std::vector<row> rows;
   auto save = [&] {
     info.seconds = seconds_since(start);
     bool ok = true;
     if (o.json) ok = write_file(*o.json, json_results(o, rows, info)) && ok;
-    if (o.csv) ok = write_file(*o.csv, csv_results(rows)) && ok;
+    if (o.csv) ok = write_file(*o.csv, csv_results(o, rows)) && ok;
     return ok;
   };
 
@@ -727,10 +793,11 @@ int main(int argc, char** argv) {
     double min_radius; ///< stars: the smallest radius, as a fraction of the largest
   };
   std::vector<series> all{{"star", o.stars, 0.3}, {"star-narrow", o.narrow_stars, 0.9}, {"grid", o.grids, 0}};
+  std::size_t libraries = 1 + o.peers.size(); // genbsp first
   bool write_ok = true;
   for (auto const& s : all) {
     // Per library and operation: a smaller size did not finish, so larger ones are skipped.
-    bool stopped[2][2] = {{false, false}, {false, false}};
+    std::vector<std::array<bool, 2>> stopped(libraries, {false, false});
     for (std::size_t index = 0; index < s.sizes.size(); ++index) {
       std::size_t n = s.sizes[index];
       multipolygon a, b;
@@ -743,8 +810,9 @@ int main(int argc, char** argv) {
         a = grid(n, rational(0));
         b = grid(n, rational(1, 2));
       }
-      bmulti ba = to_boost(a), bb = to_boost(b);
-      bool boost_valid = bg::is_valid(ba) && bg::is_valid(bb);
+      auto pa = to_plain(a), pb = to_plain(b);
+      std::string why;
+      bool input_valid = peers::valid(pa, why) && peers::valid(pb, why);
       for (int k = 0; k < 2; ++k) {
         if (!(k == 0 ? o.union_ : o.intersection)) continue;
         set_op op = k == 0 ? set_op::union_ : set_op::intersection;
@@ -754,12 +822,14 @@ int main(int argc, char** argv) {
         r.size = n;
         r.input_vertices = vertex_count(a) + vertex_count(b);
         r.input_polygons = a.size() + b.size();
-        r.boost_input_valid = boost_valid;
+        r.input_valid = input_valid;
+        r.peers.resize(o.peers.size());
         std::fprintf(stderr, "%s %s %zu (%zu input vertices):", r.family.c_str(), r.op.c_str(), n, r.input_vertices);
-        for (int lib = 0; lib < 2; ++lib) {
-          if (!(lib == 0 ? o.genbsp : o.boost)) continue;
-          measurement& m = lib == 0 ? r.genbsp : r.boost;
-          std::fprintf(stderr, "%s", lib == 0 ? " genbsp" : "; boost");
+        for (std::size_t lib = 0; lib < libraries; ++lib) {
+          if (lib == 0 && !o.genbsp) continue;
+          measurement& m = lib == 0 ? r.genbsp : r.peers[lib - 1];
+          std::fprintf(stderr, "%s %s", lib == 0 || (lib == 1 && !o.genbsp) ? "" : ";",
+                       lib == 0 ? "genbsp" : o.peers[lib - 1].name.c_str());
           if (stopped[lib][k]) {
             m.status = "skipped";
             std::fprintf(stderr, " skipped (a smaller size did not finish)");
@@ -768,7 +838,7 @@ int main(int argc, char** argv) {
           if (lib == 0)
             m = run_in_child(true, o, [&](int fd) { genbsp_child(fd, op, a, b, o); });
           else
-            m = run_in_child(false, o, [&](int fd) { boost_child(fd, op, ba, bb, o); });
+            m = run_in_child(false, o, [&](int fd) { peer_child(fd, o.peers[lib - 1], op, pa, pb, o); });
           if (m.status == "not finished") {
             stopped[lib][k] = true;
             std::fprintf(stderr, " not finished within %g s", o.limit);
@@ -778,7 +848,7 @@ int main(int argc, char** argv) {
         }
         std::fprintf(stderr, " [%.0f s so far]\n", seconds_since(start));
         rows.push_back(std::move(r));
-        print_row(rows.back());
+        print_row(o, rows.back());
         write_ok = save() && write_ok;
       }
     }
@@ -789,7 +859,8 @@ int main(int argc, char** argv) {
   if (o.json) std::printf("results written to %s\n", o.json->c_str());
   if (o.csv) std::printf("results written to %s\n", o.csv->c_str());
   bool errors = std::any_of(rows.begin(), rows.end(), [](row const& r) {
-    return r.genbsp.status.starts_with("error") || r.boost.status.starts_with("error");
+    return r.genbsp.status.starts_with("error") ||
+           std::any_of(r.peers.begin(), r.peers.end(), [](measurement const& m) { return m.status.starts_with("error"); });
   });
   if (errors) std::fprintf(stderr, "bench_boolean: some cases failed (see the status fields)\n");
   return errors || !write_ok ? 1 : 0;

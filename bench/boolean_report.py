@@ -4,11 +4,13 @@
 Reads the JSON that bench_boolean writes and produces
 
   * a log-log plot of the median time against the input vertices (both
-    operands together), genbsp solid and Boost.Geometry dashed, one panel per
-    input family (docs/images/bench-boolean.svg by default);
+    operands together), one colour per library, union solid and
+    intersection dashed, one panel per input family
+    (docs/images/bench-boolean.svg by default);
   * the Markdown of the measured part of the section "Boolean operations in
-    the plane" of docs/benchmarks.md: machine, rerun commands, the target
-    (genbsp within 3x of Boost.Geometry's time) per case, the results table
+    the plane" of docs/benchmarks.md: machine, rerun commands, the targets
+    (genbsp within 3x of the fastest other library, and faster than the other
+    exact one, CGAL) per case, the results table, output sizes and validity
     and the area agreement.  Printed to stdout, or written between the
     markers <!-- boolean-report:begin --> and <!-- boolean-report:end --> of
     the file given to --update (the text around the markers is kept).
@@ -33,7 +35,8 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from report import table  # noqa: E402  (the Markdown table of the map benchmark's report)
 
-TARGET = 3.0  # genbsp's time may be at most this multiple of Boost.Geometry's
+TARGET = 3.0  # genbsp's time may be at most this multiple of the fastest other library's
+EXACT_PEER = "cgal"  # the other exact library: genbsp must be faster than it
 BEGIN = "<!-- boolean-report:begin -->"
 END = "<!-- boolean-report:end -->"
 FAMILIES = ["star", "star-narrow", "grid"]
@@ -157,6 +160,24 @@ def ordered(results):
 
 # ---------------------------------------------------------------- sections
 
+def peer_names(d):
+    return [p["name"] for p in d["settings"].get("peers", [])]
+
+
+def peer_label(d, name):
+    for p in d["settings"].get("peers", []):
+        if p["name"] == name:
+            return p["label"]
+    return name
+
+
+SHORT = {"boost": "Boost", "clipper": "Clipper", "cgal": "CGAL"}
+
+
+def short(name):
+    return SHORT.get(name, name)
+
+
 def machine_section(d):
     m, r, s = d["machine"], d["run"], d["settings"]
     lines = ["### Machine", ""]
@@ -166,7 +187,10 @@ def machine_section(d):
                  f"`/proc/cpuinfo`){mem}{kern}")
     opt = "optimised" if m.get("optimised") else "NOT optimised"
     lines.append(f"* {m['compiler']}, CMake `Release` (`-O3 -DNDEBUG`, {opt}), Boost "
-                 f"{m['boost'].replace('_', '.')} (Boost.Geometry), GMP {m['gmp']}")
+                 f"{m['boost'].replace('_', '.')}, GMP {m['gmp']}")
+    for p in s.get("peers", []):
+        lines.append(f"* peer {p['label']}{' (exact)' if p['exact'] else ''}: timed is {p['time']}")
+    lines.append(f"* genbsp (exact): timed is {s['genbsp_time']}")
     if r.get("source_commit"):
         lines.append(f"* source: {r['source_commit']}")
     minutes = r["seconds"] / 60
@@ -181,121 +205,185 @@ def rerun_section():
     return "\n".join([
         "### Rerun", "",
         "```sh",
+        "scripts/setup --bench   # Boost.Geometry, Clipper (libpolyclipping-dev), CGAL (libcgal-dev), matplotlib",
         "cmake -S . -B build/bench-bool -G Ninja -DCMAKE_BUILD_TYPE=Release \\",
         "  -DGENBSP_BUILD_TESTS=ON -DGENBSP_BUILD_BENCH=ON -DGENBSP_BUILD_DOCS=ON",
         "cmake --build build/bench-bool -j1 --target bench_boolean",
-        "# measure (about 9 min), write docs/data/boolean-results.{json,csv},",
+        "# measure (about 15 min), write docs/data/boolean-results.{json,csv},",
         "# docs/images/bench-boolean.svg and the measured part of this section:",
         "bench/boolean_report.py --run build/bench-bool/bench/bench_boolean --update docs/benchmarks.md",
-        "build/bench-bool/bench/bench_boolean --quick     # smoke run, about 15 s",
-        "build/bench-bool/bench/bench_boolean --help      # sizes, limit, seed, one library or operation",
+        "build/bench-bool/bench/bench_boolean --quick     # smoke run, about 20 s",
+        "build/bench-bool/bench/bench_boolean --help      # sizes, limit, seed, libraries, operations",
         "```"])
+
+
+def verdict(g, m, limit, bound):
+    """(verdict, ratio, note) of genbsp against one measurement with the time bound `bound` (a multiple)."""
+    q = g["seconds"] / m["seconds"] if g["status"] == "ok" and m["status"] == "ok" and m["seconds"] > 0 else None
+    if q is not None:
+        return ("PASS" if q <= bound else "MISSED"), q
+    if g["status"] != "ok" and m["status"] == "ok":
+        return "MISSED", None
+    if g["status"] == "ok" and m["status"] != "ok":
+        return "PASS", None
+    return "open", None
+
+
+def fastest(x):
+    best = None
+    for name, m in x["peers"].items():
+        if m["status"] == "ok" and (best is None or m["seconds"] < x["peers"][best]["seconds"]):
+            best = name
+    return best
 
 
 def target_section(d):
     limit = d["settings"]["limit_seconds"]
-    rows, met, missed, open_ = [], [], [], []
+    names = peer_names(d)
+    rows, tally = [], {"fast": [0, 0, 0], "exact": [0, 0, 0]}
+    index = {"PASS": 0, "MISSED": 1, "open": 2}
     for x in ordered(d["results"]):
-        g, b, q = x["genbsp"], x["boost"], x.get("genbsp_over_boost")
-        if q is not None:
-            verdict = "PASS" if q <= TARGET else "MISSED"
-            by = DASH if q <= TARGET else fx(q / TARGET)
-            (met if q <= TARGET else missed).append((x, q))
-        elif g["status"] != "ok" and b["status"] == "ok":
-            verdict, by = "MISSED", f"genbsp {status_text(g, limit)}, Boost {fs(b['seconds'])} s"
-            missed.append((x, None))
-        elif g["status"] == "ok" and b["status"] != "ok":
-            verdict, by = "PASS", f"Boost {status_text(b, limit)}"
-            met.append((x, None))
+        g = x["genbsp"]
+        f = fastest(x)
+        if f is None:
+            # No peer finished: genbsp passes if it did.
+            v1, q1 = ("PASS" if g["status"] == "ok" else "open"), None
+            fcell = "none finished"
         else:
-            verdict = "open"
-            by = ("not run: a smaller size did not finish" if "skipped" in (g["status"], b["status"])
-                  else "neither finished")
-            open_.append(x)
-        rows.append([NAMES.get(x["family"], x["family"]), x["operation"], size_text(x), fx(q), verdict, by])
-    lines = ["### Target", "",
-             f"The target: exact genbsp within {TARGET:g}× of Boost.Geometry's double-precision time on every "
-             f"2D case. Ratio: genbsp's median time over Boost.Geometry's. A case that one library did not "
-             f"finish within {limit:g} s counts against it; a case neither finished stays open.", ""]
-    lines.append(table(["Input", "Operation", "Size", "genbsp / Boost", "Verdict", "Over the target by"], rows,
-                       ["l", "l", "l", "r", "l", "l"]))
-    ratios = [q for _, q in met + missed if q is not None]
+            v1, q1 = verdict(g, x["peers"][f], limit, TARGET)
+            fcell = f"{short(f)} {fs(x['peers'][f]['seconds'])} s"
+        tally["fast"][index[v1]] += 1
+        row = [NAMES.get(x["family"], x["family"]), x["operation"], size_text(x), seconds_cell(g, limit), fcell,
+               fx(q1), v1]
+        if EXACT_PEER in names:
+            e = x["peers"][EXACT_PEER]
+            v2, q2 = verdict(g, e, limit, 1.0)
+            tally["exact"][index[v2]] += 1
+            row += [seconds_cell(e, limit), fx(q2), v2]
+        rows.append(row)
+    header = ["Input", "Operation", "Size", "genbsp s", "Fastest other", "genbsp / fastest", "Within 3×"]
+    align = ["l", "l", "l", "r", "l", "r", "l"]
+    if EXACT_PEER in names:
+        header += ["CGAL s", "genbsp / CGAL", "Faster than CGAL"]
+        align += ["r", "r", "l"]
+    others = ", ".join(peer_label(d, n) for n in names)
+    lines = ["### Targets", "",
+             f"Two targets per case: exact genbsp within {TARGET:g}× of the fastest other library ({others}), "
+             f"and faster than CGAL's `Polygon_set_2` on the exact kernel, the only other exact one. Ratio: "
+             f"genbsp's median time over the other's. A case that one side did not finish within {limit:g} s "
+             f"counts against it; a case neither finished stays open.", ""]
+    lines.append(table(header, rows, align))
     lines.append("")
-    summary = (f"{len(met)} of {len(rows)} cases meet the target, {len(missed)} miss it"
-               + (f", {len(open_)} stay open" if open_ else "") + ".")
+    n = len(rows)
+    fast = tally["fast"]
+    text = f"Within {TARGET:g}× of the fastest: {fast[0]} of {n} cases, missed in {fast[1]}"
+    text += f", open in {fast[2]}." if fast[2] else "."
+    ratios = [r for r in (verdict(x["genbsp"], x["peers"][fastest(x)], limit, TARGET)[1]
+                          for x in d["results"] if fastest(x)) if r is not None]
     if ratios:
-        summary += (f" Where both finished, genbsp took {min(ratios):.3g} to {max(ratios):.3g} times Boost's "
-                    f"time.")
-    lines.append(summary)
+        text += f" genbsp took {min(ratios):.3g} to {max(ratios):.3g} times the fastest library's time."
+    if EXACT_PEER in names:
+        ex = tally["exact"]
+        text += f" Faster than CGAL: {ex[0]} of {n} cases, slower in {ex[1]}" + (f", open in {ex[2]}." if ex[2] else ".")
+    lines.append(text)
     return "\n".join(lines)
 
 
 def results_section(d):
     limit = d["settings"]["limit_seconds"]
+    names = peer_names(d)
     rows = []
     for x in ordered(d["results"]):
-        g, b = x["genbsp"], x["boost"]
+        g = x["genbsp"]
         split = (f"{fs(g.get('build_seconds'))} / {fs(g.get('merge_seconds'))} / {fs(g.get('output_seconds'))}"
                  if g["status"] == "ok" else DASH)
-        runs = f"{len(g['runs'])}, {len(b['runs'])}"
+        runs = ", ".join(str(len(m["runs"])) for m in [g] + [x["peers"][n] for n in names])
         rows.append([NAMES.get(x["family"], x["family"]), x["operation"], size_text(x), fi(x["input_vertices"]),
-                     seconds_cell(g, limit), split, seconds_cell(b, limit), fx(x.get("genbsp_over_boost")),
-                     size_cell(g), size_cell(b), fe(x.get("area_relative_difference")), runs])
+                     seconds_cell(g, limit), split] + [seconds_cell(x["peers"][n], limit) for n in names] + [runs])
     lines = ["### Results", "",
-             "The raw measurements: [CSV](data/boolean-results.csv), [JSON](data/boolean-results.json). Times "
-             "are medians in seconds; *build / classify / output* split genbsp's time into `operand_of` of both "
-             "operands, `bsp::merged_boundary` (the boundaries classified, no merged tree) and the rings' assembly (medians of each part). *P / R / V*: output polygons, rings "
-             "(outer rings and holes) and vertices. *Area diff*: |Boost's area − exact area| / exact area. "
-             "*Runs*: genbsp's and Boost's.", ""]
-    lines.append(table(["Input", "Operation", "Size", "Input vertices", "genbsp s", "build / classify / output",
-                        "Boost s", "genbsp / Boost", "genbsp P / R / V", "Boost P / R / V", "Area diff", "Runs"],
-                       rows, ["l", "l", "l", "r", "r", "r", "r", "r", "r", "r", "r", "r"]))
+             "The raw measurements: [CSV](data/boolean-results.csv) (one line per case and library), "
+             "[JSON](data/boolean-results.json). Times are medians in seconds; *build / classify / output* split "
+             "genbsp's time into `operand_of` of both operands, `bsp::merged_boundary` (the boundaries "
+             "classified, no merged tree) and the rings' assembly (medians of each part). *Runs*: per library, "
+             "in the order of the columns.", ""]
+    lines.append(table(["Input", "Operation", "Size", "Input vertices", "genbsp s", "build / classify / output"]
+                       + [f"{short(n)} s" for n in names] + ["Runs"],
+                       rows, ["l", "l", "l", "r", "r", "r"] + ["r"] * len(names) + ["r"]))
+    return "\n".join(lines)
+
+
+def sizes_section(d):
+    names = peer_names(d)
+    rows = []
+    for x in ordered(d["results"]):
+        g = x["genbsp"]
+        row = [NAMES.get(x["family"], x["family"]), x["operation"], size_text(x), size_cell(g)]
+        for n in names:
+            m = x["peers"][n]
+            if m["status"] != "ok":
+                row.append(DASH)
+                continue
+            same = g["status"] == "ok" and all(g[k] == m[k] for k in ("polygons", "rings", "vertices"))
+            cell = "same" if same else size_cell(m)
+            if not m.get("output_valid", True):
+                cell += " (invalid)"
+            row.append(cell)
+        rows.append(row)
+    lines = ["### Output sizes", "",
+             "*P / R / V*: output polygons, rings (outer rings and holes) and vertices; *same*: equal to "
+             "genbsp's three counts. *(invalid)*: the output fails `bg::is_valid` (after `bg::correct`, so that "
+             "ring orientation does not count).", ""]
+    lines.append(table(["Input", "Operation", "Size", "genbsp P / R / V"] + [f"{short(n)} P / R / V" for n in names],
+                       rows, ["l", "l", "l"] + ["r"] * (1 + len(names))))
     return "\n".join(lines)
 
 
 def agreement_section(d):
-    both = [x for x in d["results"] if x["genbsp"]["status"] == "ok" and x["boost"]["status"] == "ok"]
-    lines = ["### Agreement with Boost.Geometry", ""]
-    if not both:
-        lines.append("No case finished in both libraries.")
-        return "\n".join(lines)
-    diffs = [x["area_relative_difference"] for x in both]
-    worst = max(both, key=lambda x: x["area_relative_difference"])
-    same = [x for x in both if all(x["genbsp"][k] == x["boost"][k] for k in ("polygons", "rings", "vertices"))]
-    invalid = [x for x in both if not x["boost"].get("output_valid", True)]
-    text = (f"On the {len(both)} cases both libraries finished, Boost.Geometry's area differs from the exact "
-            f"area by at most {fe(max(diffs))} relative ({case_name(worst)}); the median is "
-            f"{fe(sorted(diffs)[len(diffs) // 2])}. ")
-    if len(same) == len(both):
-        text += "The output sizes (polygons, rings, vertices) agree in every one of them. "
-    else:
-        diff_names = ", ".join(case_name(x) for x in both if x not in same)
-        text += f"The output sizes agree in {len(same)} of them; they differ in {diff_names}. "
-    if invalid:
-        def why(x):
-            r = x["boost"].get("output_invalid_reason")
-            return f" (“{r}”)" if r else ""
-        text += ("Boost.Geometry's output fails `bg::is_valid` in "
-                 + ", ".join(case_name(x) + why(x) for x in invalid) + ".")
-    else:
-        text += "Every Boost.Geometry output passes `bg::is_valid`."
-    bad_input = [x for x in d["results"] if not x.get("boost_input_valid", True)]
+    lines = ["### Agreement with the exact result", ""]
+    texts = []
+    for n in peer_names(d):
+        both = [x for x in d["results"] if x["genbsp"]["status"] == "ok" and x["peers"][n]["status"] == "ok"]
+        label = peer_label(d, n)
+        if not both:
+            texts.append(f"* {label}: no case finished by both.")
+            continue
+        diffs = [x["peers"][n]["area_relative_difference"] for x in both]
+        worst = max(both, key=lambda x: x["peers"][n]["area_relative_difference"])
+        same = [x for x in both if all(x["genbsp"][k] == x["peers"][n][k] for k in ("polygons", "rings", "vertices"))]
+        invalid = [x for x in both if not x["peers"][n].get("output_valid", True)]
+        text = (f"* {label}, on the {len(both)} cases both finished: area differs from the exact area by at most "
+                f"{fe(max(diffs))} relative ({case_name(worst)}), median {fe(sorted(diffs)[len(diffs) // 2])}. ")
+        if len(same) == len(both):
+            text += "Output sizes agree in every case. "
+        else:
+            text += (f"Output sizes agree in {len(same)}; they differ in "
+                     + ", ".join(case_name(x) for x in both if x not in same) + ". ")
+        if invalid:
+            def why(x):
+                r = x["peers"][n].get("output_invalid_reason")
+                return f" (“{r}”)" if r else ""
+            text += "Invalid output (`bg::is_valid`) in " + ", ".join(case_name(x) + why(x) for x in invalid) + "."
+        elif not any(p["name"] == n and p["exact"] for p in d["settings"].get("peers", [])):
+            text += "Every output passes `bg::is_valid`."
+        texts.append(text.rstrip())
+    lines += texts
+    bad_input = [x for x in d["results"] if not x.get("input_valid", True)]
     if bad_input:
-        text += " Boost.Geometry calls some inputs invalid: " + ", ".join(case_name(x) for x in bad_input) + "."
-    lines.append(text)
+        lines.append("")
+        lines.append("Boost.Geometry calls some inputs invalid: " + ", ".join(case_name(x) for x in bad_input) + ".")
     return "\n".join(lines)
 
 
 def plot_section(image):
     return "\n".join(["### Plot", "",
-                      "![Median time against input vertices (both operands), log–log; genbsp solid, "
-                      "Boost.Geometry dashed; a triangle on the dotted line marks a run stopped at the "
+                      "![Median time against input vertices (both operands), log–log, one colour per library; "
+                      "union solid, intersection dashed; a triangle on the dotted line marks a run stopped at the "
                       f"limit]({image})"])
 
 
 def markdown(d, image):
     return "\n\n".join([machine_section(d), rerun_section(), target_section(d), results_section(d),
-                        agreement_section(d), plot_section(image)]) + "\n"
+                        sizes_section(d), agreement_section(d), plot_section(image)]) + "\n"
 
 
 def update(path, text):
@@ -323,32 +411,38 @@ def plot(d, path):
     plt.rcParams["font.size"] = 9
     limit = d["settings"]["limit_seconds"]
     families = [f for f in FAMILIES if any(x["family"] == f for x in d["results"])]
-    fig, axes = plt.subplots(1, len(families), figsize=(4.2 * len(families), 4.0), sharey=True, squeeze=False)
-    styles = {("genbsp", "union"): ("#1f77b4", "o", "-"), ("genbsp", "intersection"): ("#ff7f0e", "s", "-"),
-              ("boost", "union"): ("#1f77b4", "o", "--"), ("boost", "intersection"): ("#ff7f0e", "s", "--")}
+    fig, axes = plt.subplots(1, len(families), figsize=(4.2 * len(families), 4.3), sharey=True, squeeze=False)
+    libraries = ["genbsp"] + peer_names(d)
+    colours = {"genbsp": "#d62728", "boost": "#1f77b4", "clipper": "#2ca02c", "cgal": "#9467bd"}
+    markers = {"genbsp": "o", "boost": "s", "clipper": "^", "cgal": "D"}
+    labels = {"genbsp": "genbsp (exact)"}
+    labels.update({n: peer_label(d, n) for n in peer_names(d)})
+
+    def measurement(x, lib):
+        return x["genbsp"] if lib == "genbsp" else x["peers"][lib]
+
     any_stopped = False
     lowest = limit
     for ax, fam in zip(axes[0], families):
         rows = sorted((x for x in d["results"] if x["family"] == fam), key=lambda x: x["size"])
-        for lib, label in (("genbsp", "genbsp exact"), ("boost", "Boost.Geometry double")):
-            for op in ("union", "intersection"):
-                color, marker, ls = styles[(lib, op)]
-                pts = [(x["input_vertices"], x[lib]["seconds"]) for x in rows
-                       if x["operation"] == op and x[lib]["status"] == "ok"]
+        for li, lib in enumerate(libraries):
+            color = colours.get(lib, "#7f7f7f")
+            for op, ls in (("union", "-"), ("intersection", "--")):
+                pts = [(x["input_vertices"], measurement(x, lib)["seconds"]) for x in rows
+                       if x["operation"] == op and measurement(x, lib)["status"] == "ok"]
                 stopped = [x["input_vertices"] for x in rows
-                           if x["operation"] == op and x[lib]["status"] == "not finished"]
+                           if x["operation"] == op and measurement(x, lib)["status"] == "not finished"]
                 lowest = min([lowest] + [p[1] for p in pts])
                 if pts:
-                    ax.plot([p[0] for p in pts], [p[1] for p in pts], linestyle=ls, color=color, marker=marker,
-                            markersize=5, linewidth=1.4, markerfacecolor=color if lib == "genbsp" else "white",
-                            label=f"{label}, {op}")
-                # Stopped at the limit: an upward triangle on the limit line, genbsp
-                # left of the size and Boost right of it, so that all four stay visible.
-                shift = {("genbsp", "union"): 0.8, ("genbsp", "intersection"): 0.92,
-                         ("boost", "union"): 1.08, ("boost", "intersection"): 1.25}[(lib, op)]
+                    ax.plot([p[0] for p in pts], [p[1] for p in pts], linestyle=ls, color=color,
+                            marker=markers.get(lib, "o"), markersize=4, linewidth=1.3,
+                            markerfacecolor=color if op == "union" else "white", label=f"{labels[lib]}, {op}")
+                # Stopped at the limit: a triangle on the limit line, spread
+                # around the size so that every library's mark stays visible.
+                shift = 0.75 * 1.09 ** (2 * li + (op == "intersection"))
                 for v in stopped:
-                    ax.plot([v * shift], [limit], linestyle="none", marker="^", markersize=8, color=color,
-                            markerfacecolor=color if lib == "genbsp" else "white")
+                    ax.plot([v * shift], [limit], linestyle="none", marker="^", markersize=7, color=color,
+                            markerfacecolor=color if op == "union" else "white")
                     any_stopped = True
         ax.axhline(limit, color="#888888", linewidth=0.8, linestyle=":")
         ax.set_xscale("log")
@@ -361,13 +455,13 @@ def plot(d, path):
         ax.grid(True, which="minor", linewidth=0.3, alpha=0.25)
     axes[0][0].set_ylim(lowest / 2, limit * 4)  # shared by all panels
     axes[0][0].set_ylabel("median time (s)")
-    handles, labels = axes[0][0].get_legend_handles_labels()
-    fig.legend(handles, labels, loc="lower center", ncol=4, fontsize=8, frameon=False)
+    handles, labs = axes[0][0].get_legend_handles_labels()
+    fig.legend(handles, labs, loc="lower center", ncol=4, fontsize=7, frameon=False)
     note = f"dotted line: limit of {limit:g} s per run"
     if any_stopped:
-        note += "; ▲: stopped there, not finished (genbsp left of its size, Boost.Geometry right)"
+        note += "; ▲ on it: stopped there, not finished"
     fig.text(0.01, 0.97, note, fontsize=7, color="#444444")
-    fig.tight_layout(rect=(0, 0.07, 1, 0.96))
+    fig.tight_layout(rect=(0, 0.13, 1, 0.96))
     tmp = path + ".tmp.svg"
     fig.savefig(tmp, metadata={"Date": None})
     os.replace(tmp, path)
