@@ -91,15 +91,51 @@ namespace detail {
 /// The pieces of `s` with the labels of tree `t` on their negative and
 /// positive sides (where `s` runs along a node's hyperplane both children are
 /// looked at, as in `boundary`).
+///
+/// Both sides of a piece go down together while it stays off the hyperplanes
+/// it meets; where it lies in one (at node m), they part: the piece goes down
+/// the child on its negative side, and each part that comes out goes down the
+/// other child from m.  The same pieces, labels and order as pushing `s`
+/// down the whole tree from each side in turn, without descending twice from
+/// the root.
 template <geometry G, class N, label L>
 void labels_across(tree<G, N, L> const& t, typename G::sub_hyperplane s,
                    std::vector<std::tuple<typename G::sub_hyperplane, L, L>>& out) {
-  std::vector<std::pair<typename G::sub_hyperplane, L>> below, across;
-  push_down(t, std::move(s), t.root(), -1, below);
-  for (auto& [piece, lneg] : below) {
-    across.clear();
-    push_down(t, std::move(piece), t.root(), +1, across);
-    for (auto& [p, lpos] : across) out.emplace_back(std::move(p), lneg, lpos);
+  using S = typename G::sub_hyperplane;
+  std::vector<std::pair<S, node_id>> stack; // parts of split pieces, both sides still together
+  std::vector<std::pair<S, L>> below, across;
+  auto descend = [&](S piece, node_id m) {
+    for (;;) {
+      if (t.is_leaf(m)) {
+        out.emplace_back(std::move(piece), t.leaf_data(m), t.leaf_data(m));
+        return;
+      }
+      if (int w = whole_side<G>(piece, t.splitter(m))) {
+        m = t.child(m, w);
+        continue;
+      }
+      auto r = G::split(piece, t.splitter(m));
+      if (r.is_coincident()) {
+        int c = static_cast<int>(r.coincident); // +1: the piece faces as m's hyperplane does
+        below.clear();
+        push_down(t, std::move(piece), t.child(m, -c), -1, below);
+        for (auto& [part, lneg] : below) {
+          across.clear();
+          push_down(t, std::move(part), t.child(m, c), +1, across);
+          for (auto& [q, lpos] : across) out.emplace_back(std::move(q), lneg, lpos);
+        }
+        return;
+      }
+      if (r.negative) stack.emplace_back(std::move(*r.negative), t.negative(m));
+      if (r.positive) stack.emplace_back(std::move(*r.positive), t.positive(m));
+      return;
+    }
+  };
+  descend(std::move(s), t.root());
+  while (!stack.empty()) {
+    auto [piece, m] = std::move(stack.back());
+    stack.pop_back();
+    descend(std::move(piece), m);
   }
 }
 
