@@ -60,11 +60,7 @@ inline rational twice_signed_area(ring const& r) {
   // vertices) are summed in 128 bits, at most 2^40 of them at a time; the
   // others in rationals.
   using geometry::detail::int128;
-  constexpr double small = 0x1p40;
-  auto small_integer = [](point2 const& p) {
-    auto const& a = p.homogeneous().approx();
-    return a.integral && a.v[2] == 1 && std::fabs(a.v[0]) < small && std::fabs(a.v[1]) < small;
-  };
+  auto small_integer = [](point2 const& p) { return geometry::detail::small_plane_point(p.homogeneous()); };
   std::vector<rational> fractions;
   int128 z = 0;
   std::size_t terms = 0;
@@ -300,16 +296,33 @@ inline box bounds(ring const& r) {
   return b;
 }
 
+/// The orientation of a ring that passes through no point twice (positive:
+/// counter-clockwise): the turn at its lowest vertex of least x.  No
+/// neighbour of that vertex is below it in that order, so the turn there is
+/// strict unless the ring is flat (zero).  One exact predicate, where the
+/// signed area costs a term per vertex.
+inline geometry::sign orientation(ring const& r) {
+  std::size_t const n = r.size();
+  if (n < 3) return geometry::sign::zero;
+  std::size_t m = 0;
+  point_less less;
+  for (std::size_t i = 1; i < n; ++i)
+    if (less(r[i], r[m])) m = i;
+  return geometry::e2::orientation(r[(m + n - 1) % n], r[m], r[(m + 1) % n]);
+}
+
 } // namespace detail
 
 /// Groups rings into polygons: counter-clockwise rings are outer rings, and
 /// each clockwise ring becomes a hole of the smallest outer ring containing
-/// it.  Rings must not cross (they may touch at vertices) and must bound one
-/// region, as the rings of `assemble` do: then every hole lies in some outer
-/// ring, so of the outer rings whose bounding box holds the hole's, the
-/// largest needs no test, and a hole with one candidate (the common case)
-/// costs no exact test at all.  Throws `std::invalid_argument` for a hole
-/// that no outer ring's box holds.
+/// it.  Rings must not cross or pass twice through a point (they may touch
+/// at vertices) and must bound one region, as the rings of `assemble` do:
+/// then every hole lies in some outer ring, so of the outer rings whose
+/// bounding box holds the hole's, the largest needs no test, and a hole with
+/// one candidate (the common case) costs no exact test at all.  Flat rings
+/// are dropped.  Areas are taken only of outer rings, and only when there
+/// are holes to place.  Throws `std::invalid_argument` for a hole that no
+/// outer ring's box holds.
 inline multipolygon nest(std::vector<ring> rings) {
   struct shell {
     rational area;
@@ -320,13 +333,18 @@ inline multipolygon nest(std::vector<ring> rings) {
   std::vector<std::size_t> holes;
   multipolygon out;
   for (std::size_t i = 0; i < rings.size(); ++i) {
-    auto a = twice_signed_area(rings[i]);
-    if (a > 0) {
-      shells.push_back({a, detail::bounds(rings[i]), out.size()});
+    auto turn = detail::orientation(rings[i]);
+    if (turn == geometry::sign::positive) {
+      shells.push_back({rational(0), {}, out.size()});
       out.push_back({std::move(rings[i]), {}});
-    } else if (a < 0) {
+    } else if (turn == geometry::sign::negative) {
       holes.push_back(i);
     }
+  }
+  if (holes.empty()) return out;
+  for (auto& s : shells) {
+    s.area = twice_signed_area(out[s.index].outer);
+    s.bounds = detail::bounds(out[s.index].outer);
   }
   std::sort(shells.begin(), shells.end(), [](shell const& a, shell const& b) { return a.area < b.area; });
   std::vector<std::size_t> candidates;

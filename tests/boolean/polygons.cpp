@@ -237,4 +237,27 @@ TEST_CASE("Ring areas: integer vertices summed apart, fractions and large intege
   CHECK(boolean::twice_signed_area(square) == shoelace(square));
 }
 
+TEST_CASE("Ring orientation: the turn at the least vertex against the signed area", "[boolean][e2]") {
+  // Simple rings: random stars (integer and decimal vertices, collinear
+  // neighbours possible) in both directions, and rings whose least vertex
+  // has a vertical or straight neighbourhood.
+  for (int t = 0; t < 300; ++t) {
+    ring r = random_star(static_cast<int>(test::uniform(3, 25)), 40, t % 2 == 0);
+    if (t % 3 == 0) std::reverse(r.begin(), r.end());
+    std::rotate(r.begin(), r.begin() + test::uniform(0, static_cast<long>(r.size()) - 1), r.end());
+    auto a = boolean::twice_signed_area(r);
+    auto expected = a > 0 ? sign::positive : a < 0 ? sign::negative : sign::zero;
+    CHECK(boolean::detail::orientation(r) == expected);
+  }
+  // Least vertex with a vertical edge above it, and a vertex straight on
+  // right after it: the turn is still strict there.
+  ring box{P(Q(0), Q(0)), P(Q(2), Q(0)), P(Q(4), Q(0)), P(Q(4), Q(3)), P(Q(0), Q(3))};
+  CHECK(boolean::detail::orientation(box) == sign::positive);
+  std::reverse(box.begin(), box.end());
+  CHECK(boolean::detail::orientation(box) == sign::negative);
+  // Flat and too short rings have no orientation.
+  CHECK(boolean::detail::orientation(ring{P(Q(0), Q(0)), P(Q(1), Q(1)), P(Q(2), Q(2))}) == sign::zero);
+  CHECK(boolean::detail::orientation(ring{P(Q(0), Q(0)), P(Q(1), Q(1))}) == sign::zero);
+}
+
 } // namespace boolean_polygons_tests

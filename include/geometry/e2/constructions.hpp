@@ -88,10 +88,7 @@ template <number FT> std::optional<FT> area(polytope<FT> const& c) {
     // A triangle of three points of integer coordinates below 2^40 (w = 1
     // in primitive form: input vertices, most of a cell's) adds an integer
     // below 2^83, summed in 128 bits; the others add rationals.
-    auto small = [](hvec<FT, 3> const& x) {
-      auto const& a = x.approx();
-      return a.integral && a.v[2] == 1 && std::fabs(a.v[0]) < 0x1p40 && std::fabs(a.v[1]) < 0x1p40;
-    };
+    auto small = [](hvec<FT, 3> const& x) { return detail::small_plane_point(x); };
     auto const& ho = h[0];
     bool o_small = small(ho);
     detail::int128 z = 0;

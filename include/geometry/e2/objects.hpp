@@ -8,7 +8,21 @@
 
 #include "../common.hpp"
 
+#include <cmath>
 #include <vector>
+
+namespace geometry::detail {
+
+/// Whether the homogeneous point `h` of E2 has integer coordinates below 2^40 in
+/// magnitude (w = 1 in primitive form), read from its cached doubles: then
+/// a product of two coordinates, or of their differences, is below 2^82,
+/// and sums of many such terms fit in 128 bits.  Input vertices usually are.
+template <number FT> bool small_plane_point(hvec<FT, 3> const& h) {
+  auto const& a = h.approx();
+  return a.integral && a.v[2] == 1 && std::fabs(a.v[0]) < 0x1p40 && std::fabs(a.v[1]) < 0x1p40;
+}
+
+} // namespace geometry::detail
 
 namespace geometry::e2 {
 
