@@ -299,13 +299,21 @@ inline box bounds(ring const& r) {
 /// The orientation of a ring that passes through no point twice (positive:
 /// counter-clockwise): the turn at its lowest vertex of least x.  No
 /// neighbour of that vertex is below it in that order, so the turn there is
-/// strict unless the ring is flat (zero).  One exact predicate, where the
-/// signed area costs a term per vertex.
+/// strict unless the ring is flat (zero).  Filtered signs on the vertices'
+/// homogeneous coordinates (x_a < x_b when X_a·W_b − X_b·W_a < 0, W > 0), so
+/// that no vertex's rational coordinates are divided out, and one
+/// orientation predicate, where the signed area costs a term per vertex.
 inline geometry::sign orientation(ring const& r) {
   std::size_t const n = r.size();
   if (n < 3) return geometry::sign::zero;
+  auto less = [](point2 const& a, point2 const& b) {
+    auto const &p = a.homogeneous(), &q = b.homogeneous();
+    auto x = geometry::filtered_sign([](auto const& u, auto const& v) { return u[0] * v[2] - v[0] * u[2]; }, p, q);
+    if (x != geometry::sign::zero) return x == geometry::sign::negative;
+    return geometry::filtered_sign([](auto const& u, auto const& v) { return u[1] * v[2] - v[1] * u[2]; }, p, q) ==
+           geometry::sign::negative;
+  };
   std::size_t m = 0;
-  point_less less;
   for (std::size_t i = 1; i < n; ++i)
     if (less(r[i], r[m])) m = i;
   return geometry::e2::orientation(r[(m + n - 1) % n], r[m], r[(m + 1) % n]);
@@ -320,9 +328,9 @@ inline geometry::sign orientation(ring const& r) {
 /// then every hole lies in some outer ring, so of the outer rings whose
 /// bounding box holds the hole's, the largest needs no test, and a hole with
 /// one candidate (the common case) costs no exact test at all.  Flat rings
-/// are dropped.  Areas are taken only of outer rings, and only when there
-/// are holes to place.  Throws `std::invalid_argument` for a hole that no
-/// outer ring's box holds.
+/// are dropped.  Areas and boxes are taken only of outer rings, and only
+/// when there are holes to place in more than one.  Throws
+/// `std::invalid_argument` for a hole that no outer ring's box holds.
 inline multipolygon nest(std::vector<ring> rings) {
   struct shell {
     rational area;
@@ -342,6 +350,11 @@ inline multipolygon nest(std::vector<ring> rings) {
     }
   }
   if (holes.empty()) return out;
+  if (shells.empty()) throw std::invalid_argument("boolean::nest: a hole lies in no outer ring");
+  if (shells.size() == 1) { // every hole lies in some outer ring: this one
+    for (auto i : holes) out.front().holes.push_back(std::move(rings[i]));
+    return out;
+  }
   for (auto& s : shells) {
     s.area = twice_signed_area(out[s.index].outer);
     s.bounds = detail::bounds(out[s.index].outer);
