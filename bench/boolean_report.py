@@ -414,7 +414,7 @@ def plot(d, path):
     fig, axes = plt.subplots(1, len(families), figsize=(4.2 * len(families), 4.3), sharey=True, squeeze=False)
     libraries = ["genbsp"] + peer_names(d)
     colours = {"genbsp": "#d62728", "boost": "#1f77b4", "clipper": "#2ca02c", "cgal": "#9467bd"}
-    markers = {"genbsp": "o", "boost": "s", "clipper": "^", "cgal": "D"}
+    markers = {"genbsp": "o", "boost": "s", "clipper": "v", "cgal": "D"}
     labels = {"genbsp": "genbsp (exact)"}
     labels.update({n: peer_label(d, n) for n in peer_names(d)})
 
