@@ -64,7 +64,9 @@ def commit_text():
     try:
         out = subprocess.run(["git", "-C", ROOT, "rev-parse", "--short=12", "HEAD"], capture_output=True,
                              text=True, check=True).stdout.strip()
-        dirty = subprocess.run(["git", "-C", ROOT, "status", "--porcelain", "--untracked-files=no"],
+        # docs/ is what this run writes; it does not change what was measured.
+        dirty = subprocess.run(["git", "-C", ROOT, "status", "--porcelain", "--untracked-files=no", "--", ".",
+                                ":(exclude)docs"],
                                capture_output=True, text=True, check=True).stdout.strip()
         return f"commit `{out}`" + (" with uncommitted changes" if dirty else "")
     except (OSError, subprocess.CalledProcessError):
