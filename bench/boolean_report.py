@@ -214,7 +214,7 @@ def rerun_section():
         "# measure (about 15 min), write docs/data/boolean-results.{json,csv},",
         "# docs/images/bench-boolean.svg and the measured part of this section:",
         "bench/boolean_report.py --run build/bench-bool/bench/bench_boolean --update docs/benchmarks.md",
-        "build/bench-bool/bench/bench_boolean --quick     # smoke run, about 20 s",
+        "build/bench-bool/bench/bench_boolean --quick     # smoke run, about 10 s",
         "build/bench-bool/bench/bench_boolean --help      # sizes, limit, seed, libraries, operations",
         "```"])
 
