@@ -92,10 +92,7 @@ struct options {
   /// Seconds one run may take before it is stopped.  With the default sizes
   /// a few runs per library reach it.
   double limit = 45;
-  double long_run = 10;     ///< a run at least this long is not repeated
-  int repetitions = 3;      ///< runs per case at least (unless long); the median is reported
-  int max_repetitions = 15; ///< runs per case at most, for short cases
-  double min_total = 0.25;  ///< short cases are repeated until their runs add up to this
+  bench::repetition repeat; ///< runs per case; the median is reported
 };
 
 std::string library_names() {
@@ -369,23 +366,7 @@ struct measurement {
   std::string invalid_reason; ///< why bg::is_valid refuses it
 };
 
-double median(std::vector<double> v) {
-  if (v.empty()) return 0;
-  std::sort(v.begin(), v.end());
-  std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
-}
-
-/// Whether another run is due after `runs`: at least `repetitions`, more
-/// while short runs add up to less than `min_total`, none after a long run.
-bool another_run(std::vector<double> const& runs, options const& o) {
-  if (runs.empty()) return true;
-  if (runs.back() >= o.long_run) return false;
-  double total = 0;
-  for (double s : runs) total += s;
-  int n = static_cast<int>(runs.size());
-  return n < o.repetitions || (n < o.max_repetitions && total < o.min_total);
-}
+using bench::median;
 
 using bench::write_all;
 
@@ -414,7 +395,7 @@ void send_result(int fd, std::size_t polygons, std::size_t rings, std::size_t ve
 /// The genbsp runs of one case (in a child process).
 void genbsp_child(int fd, set_op op, multipolygon const& a, multipolygon const& b, options const& o) {
   std::vector<double> runs;
-  while (another_run(runs, o)) {
+  while (o.repeat.another_run(runs)) {
     auto t0 = clock_type::now();
     auto ra = boolean::operand_of(a);
     auto rb = boolean::operand_of(b);
@@ -447,7 +428,7 @@ void peer_child(int fd, peers::peer const& peer, set_op op, peers::polygons cons
                 options const& o) {
   auto job = peer.prepare(op == set_op::union_ ? peers::operation::union_ : peers::operation::intersection, a, b);
   std::vector<double> runs;
-  while (another_run(runs, o)) {
+  while (o.repeat.another_run(runs)) {
     auto t0 = clock_type::now();
     job->run();
     runs.push_back(seconds_since(t0));
@@ -657,9 +638,9 @@ std::string json_results(options const& o, std::vector<row> const& rows, run_inf
     << ", \"load_average_now\": " << load_average() << ", \"seconds\": " << number(info.seconds)
     << ", \"finished\": " << (info.finished ? "true" : "false") << "},\n";
   j << "  \"settings\": {\"quick\": " << (o.quick ? "true" : "false") << ", \"seed\": " << o.seed
-    << ", \"limit_seconds\": " << number(o.limit) << ", \"long_run_seconds\": " << number(o.long_run)
-    << ", \"repetitions\": " << o.repetitions << ", \"max_repetitions\": " << o.max_repetitions
-    << ", \"min_total_seconds\": " << number(o.min_total)
+    << ", \"limit_seconds\": " << number(o.limit) << ", \"long_run_seconds\": " << number(o.repeat.long_run)
+    << ", \"repetitions\": " << o.repeat.at_least << ", \"max_repetitions\": " << o.repeat.at_most
+    << ", \"min_total_seconds\": " << number(o.repeat.min_total)
     << ",\n    \"star\": \"two star polygons of n vertices, integer coordinates, radii uniform in [3e5, 1e6], "
        "centres (0, 0) and (150000, 100000)\""
     << ",\n    \"star-narrow\": \"the same with radii uniform in [9e5, 1e6]\""

@@ -87,6 +87,34 @@ template <class F> double median_seconds(int runs, F&& f) {
   return t[t.size() / 2];
 }
 
+/// The median of `v` (the mean of the middle two for an even count; 0 for none).
+inline double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
+}
+
+/// How often a case is run: at least `at_least` times (unless a run is
+/// long), more while short runs add up to less than `min_total`, at most
+/// `at_most` times, and never again after a run of `long_run` seconds.
+struct repetition {
+  int at_least = 3;
+  int at_most = 15;
+  double min_total = 0.25;
+  double long_run = 10;
+
+  /// Whether another run is due after `runs` (seconds).
+  bool another_run(std::vector<double> const& runs) const {
+    if (runs.empty()) return true;
+    if (runs.back() >= long_run) return false;
+    double total = 0;
+    for (double s : runs) total += s;
+    int n = static_cast<int>(runs.size());
+    return n < at_least || (n < at_most && total < min_total);
+  }
+};
+
 /// Writes all of `s` to `fd` (a measuring child's report), retrying after signals.
 inline void write_all(int fd, std::string const& s) {
   std::size_t done = 0;

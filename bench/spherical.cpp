@@ -54,10 +54,7 @@ struct options {
   double limit = 45;
   std::uint64_t seed = 20261207;
   std::optional<std::string> json;
-  int repetitions = 3;
-  double min_total = 0.25;
-  int max_repetitions = 15;
-  double long_run = 10;
+  bench::repetition repeat; ///< runs per case; the median is reported
 };
 
 void print_help() {
@@ -199,21 +196,7 @@ struct measurement {
   output out;
 };
 
-double median(std::vector<double> v) {
-  if (v.empty()) return 0;
-  std::sort(v.begin(), v.end());
-  std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
-}
-
-bool another_run(std::vector<double> const& runs, options const& o) {
-  if (runs.empty()) return true;
-  if (runs.back() >= o.long_run) return false;
-  double total = 0;
-  for (double s : runs) total += s;
-  int n = static_cast<int>(runs.size());
-  return n < o.repetitions || (n < o.max_repetitions && total < o.min_total);
-}
+using bench::median;
 
 void send(int fd, char const* kind, double seconds) {
   char line[96];
@@ -237,7 +220,7 @@ void genbsp_child(int fd, bool union_, std::vector<unit> const& a, std::vector<u
   };
   boolean::loop la = exact(a), lb = exact(b);
   std::vector<double> runs;
-  while (another_run(runs, o)) {
+  while (o.repeat.another_run(runs)) {
     auto t0 = clock_type::now();
     auto ra = boolean::spherical_region(std::vector<boolean::loop>{la});
     auto rb = boolean::spherical_region(std::vector<boolean::loop>{lb});
@@ -267,7 +250,7 @@ void s2_child(int fd, bool union_, std::vector<unit> const& a, std::vector<unit>
   };
   std::vector<S2Point> pa = points(a), pb = points(b);
   std::vector<double> runs;
-  while (another_run(runs, o)) {
+  while (o.repeat.another_run(runs)) {
     auto t0 = clock_type::now();
     S2Polygon sa(std::make_unique<S2Loop>(pa, S2Debug::DISABLE), S2Debug::DISABLE);
     S2Polygon sb(std::make_unique<S2Loop>(pb, S2Debug::DISABLE), S2Debug::DISABLE);
