@@ -1,5 +1,5 @@
-// Exact Boolean operations on the sphere (boolean::spherical_region, apply,
-// spherical_polygons) against Google S2's S2BooleanOperation (through
+// Exact Boolean operations on the sphere (boolean::spherical_operand_of and
+// combine) against Google S2's S2BooleanOperation (through
 // S2Polygon::InitToUnion and InitToIntersection), on the same loops in the
 // same run.  Built when Debian's libs2-dev is present (scripts/setup --bench).
 //
@@ -13,8 +13,9 @@
 // second.  Every vertex is a unit vector of doubles; genbsp reads the same
 // doubles as exact rationals, so both libraries see the same points.
 //
-// Timed, genbsp: both trees built from the loops, merged, and the result
-// read back as polygons (the job of `genbsp bool --geometry s2`).  S2: both
+// Timed, genbsp: both trees built from the loops, each operand's arcs
+// classified against both trees (the merged tree is not built) and the
+// result read back as polygons (the job of `genbsp bool --geometry s2`).  S2: both
 // S2Polygons built from their S2Loops (validity checks off: the loops are
 // valid by construction) and the operation, with S2Polygon's default snap
 // function.  Each library runs each case in a child process, stopped after
@@ -61,7 +62,7 @@ void print_help() {
   std::puts("Usage: bench_spherical [--sizes N,...] [--families star,wavy] [--limit S] [--seed N] [--json FILE] [--quick]\n"
             "\n"
             "Times genbsp's exact Boolean operations on the sphere (both regions built\n"
-            "from their loops, merged, read back as polygons) against Google S2's\n"
+            "from their loops, their arcs classified against both, read back as polygons) against Google S2's\n"
             "S2Polygon::InitToUnion and InitToIntersection (S2BooleanOperation), on two\n"
             "spherical star loops of n vertices each (angular radii in [0.3R, R], R = 30°;\n"
             "wavy: in [0.9R, R]).  Reports median times (3 runs at least, more for short\n"
@@ -222,10 +223,9 @@ void genbsp_child(int fd, bool union_, std::vector<unit> const& a, std::vector<u
   std::vector<double> runs;
   while (o.repeat.another_run(runs)) {
     auto t0 = clock_type::now();
-    auto ra = boolean::spherical_region(std::vector<boolean::loop>{la});
-    auto rb = boolean::spherical_region(std::vector<boolean::loop>{lb});
-    auto r = boolean::apply(union_ ? boolean::set_op::union_ : boolean::set_op::intersection, ra, rb);
-    auto polygons = boolean::spherical_polygons(r);
+    auto ra = boolean::spherical_operand_of(std::vector<boolean::loop>{la});
+    auto rb = boolean::spherical_operand_of(std::vector<boolean::loop>{lb});
+    auto polygons = boolean::combine(union_ ? boolean::set_op::union_ : boolean::set_op::intersection, ra, rb);
     runs.push_back(std::chrono::duration<double>(clock_type::now() - t0).count());
     send(fd, "run", runs.back());
     if (runs.size() == 1) {
@@ -236,7 +236,7 @@ void genbsp_child(int fd, bool union_, std::vector<unit> const& a, std::vector<u
         res.vertices += p.outer.size();
         for (auto const& h : p.holes) res.vertices += h.size();
       }
-      res.area = boolean::area(r);
+      res.area = boolean::area(polygons);
       send_result(fd, res);
     }
   }

@@ -93,13 +93,15 @@ inline bool filled(long w, fill_rule rule) {
 
 } // namespace detail
 
-/// An operand of a Boolean operation: its tree and pieces covering its
-/// boundary (the input edges it was built from), which the fast path of
-/// `combine` classifies instead of walking the merged tree.
-struct operand {
-  region2 tree;
-  std::vector<plane_kernel::sub_hyperplane> boundary;
+/// An operand of a Boolean operation in geometry `G`: its tree and pieces
+/// covering its boundary (the input edges it was built from), which the
+/// fast path of `combine` classifies instead of walking the merged tree.
+template <bsp::geometry G> struct basic_operand {
+  bsp::point_set<G, bool> tree;
+  std::vector<typename G::sub_hyperplane> boundary;
 };
+/// An operand in the plane.
+using operand = basic_operand<plane_kernel>;
 
 /// The region of a set of polygons with holes, read by the simple-features
 /// rules: each polygon is its outer ring's interior minus its holes', and the

@@ -321,6 +321,12 @@ inline geometry::sign orientation(ring const& r) {
 
 } // namespace detail
 
+/// A polygon of `nest_indices`: the index of its outer ring and of its holes.
+struct nested_rings {
+  std::size_t outer;
+  std::vector<std::size_t> holes;
+};
+
 /// Groups rings into polygons: counter-clockwise rings are outer rings, and
 /// each clockwise ring becomes a hole of the smallest outer ring containing
 /// it.  Rings must not cross or pass twice through a point (they may touch
@@ -329,22 +335,23 @@ inline geometry::sign orientation(ring const& r) {
 /// bounding box holds the hole's, the largest needs no test, and a hole with
 /// one candidate (the common case) costs no exact test at all.  Flat rings
 /// are dropped.  Areas and boxes are taken only of outer rings, and only
-/// when there are holes to place in more than one.  Throws
-/// `std::invalid_argument` for a hole that no outer ring's box holds.
-inline multipolygon nest(std::vector<ring> rings) {
+/// when there are holes to place in more than one.  Returns the polygons as
+/// indices into `rings`, outer rings and holes each in the order given.
+/// Throws `std::invalid_argument` for a hole that no outer ring's box holds.
+inline std::vector<nested_rings> nest_indices(std::vector<ring> const& rings) {
   struct shell {
     rational area;
     detail::box bounds;
-    std::size_t index;
+    std::size_t index; ///< into `out`
   };
   std::vector<shell> shells;
   std::vector<std::size_t> holes;
-  multipolygon out;
+  std::vector<nested_rings> out;
   for (std::size_t i = 0; i < rings.size(); ++i) {
     auto turn = detail::orientation(rings[i]);
     if (turn == geometry::sign::positive) {
       shells.push_back({rational(0), {}, out.size()});
-      out.push_back({std::move(rings[i]), {}});
+      out.push_back({i, {}});
     } else if (turn == geometry::sign::negative) {
       holes.push_back(i);
     }
@@ -352,12 +359,12 @@ inline multipolygon nest(std::vector<ring> rings) {
   if (holes.empty()) return out;
   if (shells.empty()) throw std::invalid_argument("boolean::nest: a hole lies in no outer ring");
   if (shells.size() == 1) { // every hole lies in some outer ring: this one
-    for (auto i : holes) out.front().holes.push_back(std::move(rings[i]));
+    out.front().holes = std::move(holes);
     return out;
   }
   for (auto& s : shells) {
-    s.area = twice_signed_area(out[s.index].outer);
-    s.bounds = detail::bounds(out[s.index].outer);
+    s.area = twice_signed_area(rings[out[s.index].outer]);
+    s.bounds = detail::bounds(rings[out[s.index].outer]);
   }
   std::sort(shells.begin(), shells.end(), [](shell const& a, shell const& b) { return a.area < b.area; });
   std::vector<std::size_t> candidates;
@@ -369,11 +376,25 @@ inline multipolygon nest(std::vector<ring> rings) {
     if (candidates.empty()) throw std::invalid_argument("boolean::nest: a hole lies in no outer ring");
     std::size_t chosen = candidates.back();
     for (std::size_t c = 0; c + 1 < candidates.size(); ++c)
-      if (detail::ring_in_ring(rings[i], out[shells[candidates[c]].index].outer) == location::inside) {
+      if (detail::ring_in_ring(rings[i], rings[out[shells[candidates[c]].index].outer]) == location::inside) {
         chosen = candidates[c];
         break;
       }
-    out[shells[chosen].index].holes.push_back(std::move(rings[i]));
+    out[shells[chosen].index].holes.push_back(i);
+  }
+  return out;
+}
+
+/// The polygons of `nest_indices(rings)`.
+inline multipolygon nest(std::vector<ring> rings) {
+  auto groups = nest_indices(rings);
+  multipolygon out;
+  out.reserve(groups.size());
+  for (auto& g : groups) {
+    polygon p{std::move(rings[g.outer]), {}};
+    p.holes.reserve(g.holes.size());
+    for (auto h : g.holes) p.holes.push_back(std::move(rings[h]));
+    out.push_back(std::move(p));
   }
   return out;
 }

@@ -19,9 +19,14 @@
 
 #include <bsp/boolean.hpp>
 #include <bsp/point_set.hpp>
+#include <geometry/hash.hpp>
 #include <geometry/s2.hpp>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <numbers>
 #include <optional>
 #include <stdexcept>
@@ -121,25 +126,6 @@ inline std::optional<direction> interior_point(geometry::s2::polytope<rational> 
   return p;
 }
 
-/// Key for a direction: its vector scaled so that its largest coordinate has
-/// absolute value 1, which is the same for all positive multiples.
-inline std::array<rational, 3> key_of(direction const& d) {
-  rational m(0);
-  for (std::size_t i = 0; i < 3; ++i)
-    if (abs(d[i]) > m) m = abs(d[i]);
-  return {rational(d[0] / m), rational(d[1] / m), rational(d[2] / m)};
-}
-
-struct key_less {
-  bool operator()(std::array<rational, 3> const& a, std::array<rational, 3> const& b) const {
-    for (std::size_t i = 0; i < 3; ++i) {
-      if (a[i] < b[i]) return true;
-      if (b[i] < a[i]) return false;
-    }
-    return false;
-  }
-};
-
 } // namespace detail
 
 /// The direction of longitude `lon` and latitude `lat` in degrees (x towards
@@ -175,23 +161,29 @@ inline region_s2 spherical_region(std::vector<loop> const& loops) {
   return bsp::build_point_set<sphere_kernel>(std::move(arcs), true, false, bsp::random_order(20261128));
 }
 
+namespace detail {
+
+/// The loops of a polygon given in longitude/latitude degrees.
+inline std::vector<loop> loops_of_lonlat(geometry::io::polygon_with_holes const& p) {
+  auto convert = [](ring const& r) {
+    loop l;
+    for (auto const& v : r) l.push_back(from_lonlat(v.x(), v.y()));
+    return l;
+  };
+  std::vector<loop> loops{convert(p.outer)};
+  for (auto const& h : p.holes) loops.push_back(convert(h));
+  return loops;
+}
+
+} // namespace detail
+
 /// The union of GeoJSON polygons given in longitude/latitude degrees: each
 /// polygon's outer ring counter-clockwise and its holes clockwise (RFC 7946),
 /// its edges great-circle arcs.  Polygons are built one by one and united,
 /// so overlapping polygons are read as their union.
 inline region_s2 spherical_region(multipolygon const& lonlat) {
   region_s2 out(false);
-  for (auto const& p : lonlat) {
-    std::vector<loop> loops;
-    auto convert = [](ring const& r) {
-      loop l;
-      for (auto const& v : r) l.push_back(from_lonlat(v.x(), v.y()));
-      return l;
-    };
-    loops.push_back(convert(p.outer));
-    for (auto const& h : p.holes) loops.push_back(convert(h));
-    out = bsp::set_union(out, spherical_region(loops));
-  }
+  for (auto const& p : lonlat) out = bsp::set_union(out, spherical_region(detail::loops_of_lonlat(p)));
   return out;
 }
 
@@ -205,25 +197,52 @@ struct spherical_polygon {
   std::vector<loop> holes;
 };
 
-/// The polygons of a region that is neither empty nor the whole sphere is
-/// a set of loops; grouped into polygons here by taking a point outside the
-/// region as "infinity": loops that keep it on their right are outer loops,
-/// the others are holes, each in the smallest outer loop whose region holds
-/// it.  Each output arc is shorter than a half circle (half and whole circles
-/// get extra vertices), so every edge is the minor arc between its ends.
-/// Returns no polygon for the empty region; throws `std::invalid_argument`
-/// for the whole sphere, which no loop bounds.
-inline std::vector<spherical_polygon> spherical_polygons(region_s2 const& r) {
-  using key = std::array<rational, 3>;
-  struct arc_edge {
-    direction from, to, normal; // the circle's normal: the region on its positive side
-  };
+/// An operand of a spherical Boolean operation: its tree and the arcs it
+/// was built from, which `combine` classifies instead of building the
+/// merged tree.
+using spherical_operand = basic_operand<sphere_kernel>;
+
+/// The operand bounded by `loops` (see `spherical_region`), with its arcs.
+inline spherical_operand spherical_operand_of(std::vector<loop> const& loops) {
+  std::vector<sphere_kernel::sub_hyperplane> arcs;
+  for (auto const& l : loops) detail::add_arcs(l, arcs);
+  auto t = bsp::build_point_set<sphere_kernel>(arcs, true, false, bsp::random_order(20261128));
+  return {std::move(t), std::move(arcs)};
+}
+
+/// The operand of GeoJSON polygons in longitude/latitude degrees (see
+/// `spherical_region`): one polygon's boundary is its loops' arcs; several
+/// polygons are united and their boundary is read off the union.
+inline spherical_operand spherical_operand_of(multipolygon const& lonlat) {
+  if (lonlat.size() == 1) return spherical_operand_of(detail::loops_of_lonlat(lonlat.front()));
+  auto t = spherical_region(lonlat);
+  auto b = bsp::oriented_boundary(t);
+  return {std::move(t), std::move(b)};
+}
+
+namespace detail {
+
+/// An arc of an output loop, with the normal of its circle (the region on
+/// its positive side).
+struct arc_edge {
+  direction from, to, normal;
+};
+
+/// The loops bounded by `pieces`, each with the region on its negative side
+/// (as `bsp::oriented_boundary` and `bsp::merged_boundary` give them), as
+/// vertex lists with the region on their left.  Vertices are numbered by
+/// their primitive integer coordinates (no rational is made); whole and half
+/// circles get vertices every quarter turn, and consecutive arcs on one
+/// circle are joined unless that would leave an arc of a half circle or
+/// more, so every edge is the minor arc between its ends.  At a vertex where
+/// the boundary touches itself a loop turns as far left as it can and is
+/// cut there.
+inline std::vector<loop> loops_of(std::vector<sphere_kernel::sub_hyperplane> const& pieces) {
   std::vector<arc_edge> edges;
-  for (auto& b : bsp::boundary(r)) {
-    auto piece = b.positive ? b.piece : geometry::s2::opposite(b.piece);
+  for (auto const& p : pieces) {
+    auto piece = geometry::s2::opposite(p);
     auto const& n = piece.support.n;
     auto ends = geometry::s2::endpoints(piece);
-    // Whole circles and half circles get vertices every quarter turn.
     std::vector<direction> pts;
     if (ends.empty()) {
       std::size_t k = 0;
@@ -241,15 +260,13 @@ inline std::vector<spherical_polygon> spherical_polygons(region_s2 const& r) {
     }
     for (std::size_t i = 0; i + 1 < pts.size(); ++i) edges.push_back({pts[i], pts[i + 1], n});
   }
-  if (edges.empty()) {
-    if (bsp::classify(r, direction(std::array<rational, 3>{rational(0), rational(0), rational(1)})).value_or(false))
-      throw std::invalid_argument("boolean::spherical_polygons: the region is the whole sphere");
-    return {};
-  }
-  std::vector<key> from, to;
-  for (auto const& e : edges) from.push_back(detail::key_of(e.from)), to.push_back(detail::key_of(e.to));
+  if (edges.empty()) return {};
+  geometry::welder<3> vertex_id;
+  std::vector<std::uint32_t> from, to;
+  from.reserve(edges.size()), to.reserve(edges.size());
+  for (auto const& e : edges) from.push_back(vertex_id(e.from)), to.push_back(vertex_id(e.to));
   // Tangents: leaving `v` along a circle of normal n the direction is n × v.
-  auto loops = detail::trace_loops<key, detail::key_less>(from, to, [&](std::size_t in, std::size_t a, std::size_t b) {
+  auto loops = trace_loops(vertex_id.vertex.size(), from, to, [&](std::size_t in, std::size_t a, std::size_t b) {
     auto const& v = edges[in].to;
     direction back = -geometry::cross(edges[in].normal, v);
     direction ta = geometry::cross(edges[a].normal, v), tb = geometry::cross(edges[b].normal, v);
@@ -264,16 +281,11 @@ inline std::vector<spherical_polygon> spherical_polygons(region_s2 const& r) {
     if (ha != hb) return ha < hb;
     return cr(ta, tb) == geometry::sign::negative;
   });
-  // Loops as vertex lists; consecutive arcs on one circle are joined, unless
-  // that would leave an arc of a half circle or more.
   std::vector<loop> all;
-  std::vector<std::vector<std::size_t>> loop_edges;
   for (auto const& l : loops) {
-    std::vector<std::size_t> kept;
-    for (std::size_t i = 0; i < l.size(); ++i) kept.push_back(l[i]);
     loop v;
     std::vector<direction> normals;
-    for (auto e : kept) v.push_back(edges[e].from), normals.push_back(edges[e].normal);
+    for (auto e : l) v.push_back(edges[e].from), normals.push_back(edges[e].normal);
     bool changed = true;
     while (changed && v.size() > 3) {
       changed = false;
@@ -289,12 +301,14 @@ inline std::vector<spherical_polygon> spherical_polygons(region_s2 const& r) {
     }
     if (v.size() >= 3) all.push_back(std::move(v));
   }
-  // A point outside the region, off every loop.
-  std::optional<direction> outside;
-  for (auto const& c : bsp::cells(r))
-    if (!r.leaf_data(c.leaf))
-      if ((outside = detail::interior_point(c.region))) break;
-  if (!outside) throw std::invalid_argument("boolean::spherical_polygons: the region is the whole sphere");
+  return all;
+}
+
+/// Groups loops into polygons, given a direction `outside` outside their
+/// region and off every loop: loops that keep it on their right are outer
+/// loops, the others holes, each in the smallest outer loop whose region
+/// holds it.  Works for any loops, a point-set tree built per loop.
+inline std::vector<spherical_polygon> nest_by_trees(std::vector<loop> all, direction const& outside) {
   struct loop_info {
     region_s2 left;
     double area;
@@ -303,7 +317,7 @@ inline std::vector<spherical_polygon> spherical_polygons(region_s2 const& r) {
   std::vector<loop_info> info;
   for (auto const& l : all) {
     auto t = spherical_region(std::vector<loop>{l});
-    bool holds_outside = bsp::classify(t, *outside).value_or(false);
+    bool holds_outside = bsp::classify(t, outside).value_or(false);
     double a = bsp::measure(t, true);
     info.push_back({std::move(t), a, !holds_outside});
   }
@@ -332,10 +346,169 @@ inline std::vector<spherical_polygon> spherical_polygons(region_s2 const& r) {
   return out;
 }
 
-/// The polygons of a region as longitude/latitude rings in degrees (the
-/// nearest doubles, read exactly), ready for WKT or GeoJSON.  A region that
-/// is the whole sphere has no ring: `std::invalid_argument`.
-inline multipolygon lonlat_polygons(region_s2 const& r) {
+/// A unit vector of doubles in the direction of `d`, from its integer
+/// coordinates (scaled by powers of two, so none overflows).
+inline std::array<double, 3> unit_of(direction const& d) {
+  auto const& z = d.integer_view();
+  std::array<double, 3> m{};
+  std::array<long, 3> e{};
+  for (std::size_t k = 0; k < 3; ++k) {
+    if (z.mid()) m[k] = static_cast<double>(z.z128[k]);
+    else m[k] = mpz_get_d_2exp(&e[k], z.big()[k].backend().data());
+  }
+  long top = std::numeric_limits<long>::min();
+  for (std::size_t k = 0; k < 3; ++k)
+    if (m[k] != 0) top = std::max(top, e[k]);
+  std::array<double, 3> r{};
+  for (std::size_t k = 0; k < 3; ++k)
+    if (m[k] != 0) r[k] = std::ldexp(m[k], static_cast<int>(std::max(e[k] - top, -1000L)));
+  double l = std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
+  return {r[0] / l, r[1] / l, r[2] / l};
+}
+
+/// A direction near the middle of the loops' vertices, on integers below
+/// 2^25 (the sum of their unit vectors, rounded); none when that sum is
+/// about zero.
+inline std::optional<direction> centre_of(std::vector<loop> const& all) {
+  std::array<double, 3> s{};
+  for (auto const& l : all)
+    for (auto const& v : l) {
+      auto u = unit_of(v);
+      for (std::size_t k = 0; k < 3; ++k) s[k] += u[k];
+    }
+  double len = std::sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
+  if (!(len > 0)) return std::nullopt;
+  std::array<geometry::integer, 3> c;
+  bool zero = true;
+  for (std::size_t k = 0; k < 3; ++k) {
+    c[k] = std::llround(std::ldexp(s[k] / len, 24));
+    zero = zero && c[k] == 0;
+  }
+  if (zero) return std::nullopt;
+  geometry::detail::make_primitive(c);
+  return direction::from_integers(geometry::detail::integer_vector<3>(std::move(c)));
+}
+
+/// Groups loops into polygons as `nest_by_trees` does, when every vertex
+/// lies in the open hemisphere around `c` and −c is outside the region:
+/// there the central projection onto the plane touching the sphere at `c`
+/// sends minor arcs to segments, keeps every turn, and sends the region to
+/// a bounded one, so the plane's `nest_indices` groups the projected rings
+/// (counter-clockwise: outer loops).  The projected points are homogeneous
+/// integers (v·e1, v·e2, v·c) of each vertex v, with e1, e2, c a right-handed
+/// orthogonal frame on integers: no rational is made unless two outer rings
+/// compete for a hole.  None when some vertex is not in the hemisphere.
+inline std::optional<std::vector<spherical_polygon>> nest_in_hemisphere(std::vector<loop>& all, direction const& c) {
+  using geometry::integer;
+  auto const& C = c.integers();
+  std::size_t k = 0;
+  for (std::size_t i = 1; i < 3; ++i)
+    if (abs(C[i]) < abs(C[k])) k = i;
+  std::array<integer, 3> axis{integer(0), integer(0), integer(0)};
+  axis[k] = 1;
+  auto e1 = geometry::cross(C, axis), e2 = geometry::cross(C, e1); // e1 × e2 = |e1|²·c
+  std::vector<ring> rings;
+  rings.reserve(all.size());
+  for (auto const& l : all) {
+    ring r;
+    r.reserve(l.size());
+    for (auto const& v : l) {
+      auto const& z = v.integers();
+      std::array<integer, 3> h{geometry::dot(z, e1), geometry::dot(z, e2), geometry::dot(z, C)};
+      if (h[2].sign() <= 0) return std::nullopt;
+      geometry::detail::make_primitive(h);
+      r.push_back(point2::from_homogeneous(geometry::hvec<rational, 3>::from_integers(geometry::detail::integer_vector<3>(std::move(h)))));
+    }
+    rings.push_back(std::move(r));
+  }
+  std::vector<spherical_polygon> out;
+  for (auto& g : nest_indices(rings)) {
+    spherical_polygon p{std::move(all[g.outer]), {}};
+    for (auto h : g.holes) p.holes.push_back(std::move(all[h]));
+    out.push_back(std::move(p));
+  }
+  return out;
+}
+
+} // namespace detail
+
+/// The polygons of a region that is neither empty nor the whole sphere is
+/// a set of loops; grouped into polygons here by taking a point outside the
+/// region as "infinity": loops that keep it on their right are outer loops,
+/// the others are holes, each in the smallest outer loop whose region holds
+/// it.  Each output arc is shorter than a half circle (half and whole circles
+/// get extra vertices), so every edge is the minor arc between its ends.
+/// When the loops lie in an open hemisphere whose centre's antipode is
+/// outside the region, they are nested in the plane by central projection
+/// (`detail::nest_in_hemisphere`); otherwise by a tree per loop.
+/// Returns no polygon for the empty region; throws `std::invalid_argument`
+/// for the whole sphere, which no loop bounds.
+inline std::vector<spherical_polygon> spherical_polygons(region_s2 const& r) {
+  auto all = detail::loops_of(bsp::oriented_boundary(r));
+  if (all.empty()) {
+    if (bsp::classify(r, direction(std::array<rational, 3>{rational(0), rational(0), rational(1)})).value_or(false))
+      throw std::invalid_argument("boolean::spherical_polygons: the region is the whole sphere");
+    return {};
+  }
+  if (auto c = detail::centre_of(all); c && bsp::classify(r, -*c) == false)
+    if (auto out = detail::nest_in_hemisphere(all, *c)) return std::move(*out);
+  // A point outside the region, off every loop.
+  std::optional<direction> outside;
+  for (auto const& c : bsp::cells(r))
+    if (!r.leaf_data(c.leaf))
+      if ((outside = detail::interior_point(c.region))) break;
+  if (!outside) throw std::invalid_argument("boolean::spherical_polygons: the region is the whole sphere");
+  return detail::nest_by_trees(std::move(all), *outside);
+}
+
+/// The valid spherical polygons of `op(a, b)`, from the operands' arcs
+/// classified against both trees (`bsp::merged_boundary`): the merged tree
+/// is not built (unless the result's loops lie in no open hemisphere whose
+/// centre's antipode is outside the result, or the result has no loop: then
+/// it is built and read as `spherical_polygons(apply(op, a.tree, b.tree))`
+/// reads it).  The same polygons as that.  Throws `std::invalid_argument`
+/// when the result is the whole sphere.
+inline std::vector<spherical_polygon> combine(set_op op, spherical_operand const& a, spherical_operand const& b) {
+  auto all = detail::loops_of(bsp::merged_boundary(a.tree, a.boundary, b.tree, b.boundary,
+                                                   [op](bool x, bool y) { return detail::label_op(op, x, y); }));
+  if (!all.empty())
+    if (auto c = detail::centre_of(all)) {
+      // −c outside the result: both operands' labels there decide it (none on a boundary).
+      auto x = bsp::classify(a.tree, -*c), y = bsp::classify(b.tree, -*c);
+      if (x && y && !detail::label_op(op, *x, *y))
+        if (auto out = detail::nest_in_hemisphere(all, *c)) return std::move(*out);
+    }
+  return spherical_polygons(apply(op, a.tree, b.tree));
+}
+
+/// The area of spherical polygons in steradians (double): by Gauss–Bonnet,
+/// 2π minus the turns of each loop, less 4π for each hole; each turn is
+/// the angle between the exact normals of the circles meeting there, its
+/// sign exact.
+inline double area(std::vector<spherical_polygon> const& polygons) {
+  double sum = 0;
+  auto loop_area = [](loop const& l) {
+    std::size_t k = l.size();
+    std::vector<direction> normal(k);
+    for (std::size_t i = 0; i < k; ++i) normal[i] = geometry::cross(l[i], l[(i + 1) % k]);
+    double turn = 0;
+    for (std::size_t i = 0; i < k; ++i) {
+      auto const &n0 = normal[(i + k - 1) % k], &n1 = normal[i];
+      double a = geometry::s2::angle_between(detail::unit_of(n0), detail::unit_of(n1));
+      turn += geometry::det_sign(n0, n1, l[i]) == geometry::sign::negative ? -a : a;
+    }
+    return 2 * std::numbers::pi - turn;
+  };
+  for (auto const& p : polygons) {
+    sum += loop_area(p.outer);
+    for (auto const& h : p.holes) sum += loop_area(h) - 4 * std::numbers::pi;
+  }
+  return sum;
+}
+
+/// Spherical polygons as longitude/latitude rings in degrees (the nearest
+/// doubles, read exactly), ready for WKT or GeoJSON.
+inline multipolygon lonlat_polygons(std::vector<spherical_polygon> const& polygons) {
   auto lonlat = [](loop const& l) {
     ring out;
     for (auto const& d : l) {
@@ -345,12 +518,17 @@ inline multipolygon lonlat_polygons(region_s2 const& r) {
     return out;
   };
   multipolygon m;
-  for (auto const& p : spherical_polygons(r)) {
+  for (auto const& p : polygons) {
     geometry::io::polygon_with_holes q{lonlat(p.outer), {}};
     for (auto const& h : p.holes) q.holes.push_back(lonlat(h));
     m.push_back(std::move(q));
   }
   return m;
 }
+
+/// The polygons of a region as longitude/latitude rings in degrees (see
+/// above).  A region that is the whole sphere has no ring:
+/// `std::invalid_argument`.
+inline multipolygon lonlat_polygons(region_s2 const& r) { return lonlat_polygons(spherical_polygons(r)); }
 
 } // namespace boolean

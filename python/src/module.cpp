@@ -359,10 +359,10 @@ py::dict boolean_s2(std::string const& a, std::string const& b, std::string cons
     double area = 0;
   };
   auto r = guarded([&] {
-    auto A = boolean::spherical_region(read_operand(a, "a")), B = boolean::spherical_region(read_operand(b, "b"));
-    auto region = boolean::apply(o, A, B);
-    auto m = boolean::lonlat_polygons(region);
-    return result{geometry::io::to_wkt(m), geometry::io::to_geojson(m), boolean::area(region)};
+    auto A = boolean::spherical_operand_of(read_operand(a, "a")), B = boolean::spherical_operand_of(read_operand(b, "b"));
+    auto polygons = boolean::combine(o, A, B);
+    auto m = boolean::lonlat_polygons(polygons);
+    return result{geometry::io::to_wkt(m), geometry::io::to_geojson(m), boolean::area(polygons)};
   });
   py::dict d;
   d["wkt"] = r.wkt, d["geojson"] = r.geojson, d["area"] = r.area, d["area_km2"] = r.area * boolean::earth_radius_km * boolean::earth_radius_km;

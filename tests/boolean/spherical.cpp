@@ -8,8 +8,10 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 using boolean::direction;
 using boolean::loop;
@@ -34,19 +36,26 @@ std::size_t inside_cells(boolean::region_s2 const& r) {
   return n;
 }
 
-/// The output polygons of `r`, read back as a region, must be `r` exactly.
-void check_round_trip(boolean::region_s2 const& r) {
-  auto polys = boolean::spherical_polygons(r);
+/// Polygons read back as a region.  Every output arc must be a minor arc
+/// (consecutive vertices independent), and each polygon disjoint from the
+/// ones before it.
+boolean::region_s2 read_back(std::vector<boolean::spherical_polygon> const& polys) {
   boolean::region_s2 back(false);
   for (auto const& p : polys) {
     std::vector<loop> loops{p.outer};
     loops.insert(loops.end(), p.holes.begin(), p.holes.end());
-    // Every output arc is a minor arc: consecutive vertices are independent.
     for (auto const& l : loops)
       for (std::size_t i = 0; i < l.size(); ++i) CHECK(geometry::parallel(l[i], l[(i + 1) % l.size()]) == geometry::sign::zero);
-    back = bsp::set_union(back, region(loops));
+    auto one = region(loops);
+    CHECK(inside_cells(boolean::apply(set_op::intersection, back, one)) == 0);
+    back = bsp::set_union(back, one);
   }
-  CHECK(inside_cells(boolean::apply(set_op::symmetric_difference, back, r)) == 0);
+  return back;
+}
+
+/// The output polygons of `r`, read back as a region, must be `r` exactly.
+void check_round_trip(boolean::region_s2 const& r) {
+  CHECK(inside_cells(boolean::apply(set_op::symmetric_difference, read_back(boolean::spherical_polygons(r)), r)) == 0);
 }
 
 /// Independent area of a spherical polygon around a point `c` inside it: the
@@ -69,6 +78,34 @@ std::array<double, 3> unit(double lon, double lat) {
   return {std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat)};
 }
 
+
+/// `combine` on operands built from `a` and `b` must give the polygons that
+/// the merged tree gives: the same region exactly (read back), as many
+/// polygons with as many holes each, the same area.
+void check_combine(std::vector<loop> const& a, std::vector<loop> const& b) {
+  auto A = boolean::spherical_operand_of(a), B = boolean::spherical_operand_of(b);
+  for (auto op : {set_op::union_, set_op::intersection, set_op::difference, set_op::symmetric_difference}) {
+    auto r = boolean::apply(op, A.tree, B.tree);
+    bool whole = inside_cells(boolean::apply(set_op::difference, boolean::region_s2(true), r)) == 0;
+    if (whole) {
+      CHECK_THROWS_AS(boolean::combine(op, A, B), std::invalid_argument);
+      continue;
+    }
+    auto fast = boolean::combine(op, A, B);
+    auto slow = boolean::spherical_polygons(r);
+    REQUIRE(fast.size() == slow.size());
+    auto holes = [](std::vector<boolean::spherical_polygon> const& ps) {
+      std::vector<std::size_t> h;
+      for (auto const& p : ps) h.push_back(p.holes.size());
+      std::sort(h.begin(), h.end());
+      return h;
+    };
+    CHECK(holes(fast) == holes(slow));
+    auto back = read_back(fast);
+    CHECK(inside_cells(boolean::apply(set_op::symmetric_difference, back, r)) == 0);
+    CHECK(boolean::area(fast) == Approx(boolean::area(r)).epsilon(1e-11).margin(1e-13));
+  }
+}
 } // namespace
 
 TEST_CASE("S2 Boolean operations: octants, lunes and hemispheres have their closed-form areas", "[boolean][s2]") {
@@ -178,6 +215,105 @@ TEST_CASE("S2 Boolean operations: inclusion-exclusion on random spherical polygo
     for (auto const* r : {&U, &I, &X})
       if (inside_cells(*r)) check_round_trip(*r);
   }
+}
+
+
+TEST_CASE("S2 Boolean operations: combine without the merged tree gives the merged tree's polygons", "[boolean][s2]") {
+  loop square{ll(-1, -1), ll(1, -1), ll(1, 1), ll(-1, 1)};
+  loop reversed(square.rbegin(), square.rend());
+  loop shifted{ll(0, 0), ll(2, 0), ll(2, 2), ll(0, 2)};
+  loop beside{ll(1, -1), ll(3, -1), ll(3, 1), ll(1, 1)};     // shares the edge at 1°
+  loop corner{ll(1, 1), ll(3, 1), ll(3, 3), ll(1, 3)};       // touches at (1°, 1°)
+  loop inner{ll(-0.5, -0.5), ll(0.5, -0.5), ll(0.5, 0.5), ll(-0.5, 0.5)};
+  loop far{ll(100, 20), ll(110, 20), ll(110, 30), ll(100, 30)};
+  loop cap, hole, island;
+  for (int k = 0; k < 8; ++k) cap.push_back(ll(45 * k, 80)), island.push_back(ll(45 * k + 10, 88));
+  for (int k = 7; k >= 0; --k) hole.push_back(ll(45 * k, 85));
+  loop octant{d(1, 0, 0), d(0, 1, 0), d(0, 0, 1)};
+  loop north{ll(0, 0), ll(90, 0), ll(180, 0), ll(-90, 0)};
+  SECTION("degenerate pairs") {
+    check_combine({square}, {square});   // identical
+    check_combine({square}, {reversed}); // complements: the union is the whole sphere
+    check_combine({square}, {shifted});
+    check_combine({square}, {beside});
+    check_combine({square}, {corner});
+    check_combine({square}, {inner});    // one inside the other
+    check_combine({square}, {far});      // disjoint
+    check_combine({reversed}, {inner});  // larger than a hemisphere
+    check_combine({reversed}, {far});
+    check_combine({octant}, {north});    // vertices and arcs on the axes and the equator
+    check_combine({north}, {square});    // a half circle through the square
+  }
+  SECTION("holes and islands") {
+    check_combine({cap, hole}, {island});   // a polygon with a hole, an island in the hole
+    check_combine({cap, hole}, {inner});
+    check_combine({cap, hole}, {cap});
+  }
+  SECTION("random stars") {
+    for (int t = 0; t < 8; ++t) {
+      auto star = [](double lon, double lat) {
+        int k = static_cast<int>(test::uniform(5, 40));
+        loop l;
+        for (int i = 0; i < k; ++i) {
+          double r = static_cast<double>(test::uniform(4, 30)), a = 2 * pi * (i + 0.5) / k;
+          l.push_back(boolean::from_lonlat(Q(std::lround((lon + r * std::cos(a)) * 10), 10), Q(std::lround((lat + r * std::sin(a)) * 10), 10)));
+        }
+        return l;
+      };
+      check_combine({star(0, 0)}, {star(static_cast<double>(test::uniform(-5, 5)), static_cast<double>(test::uniform(-5, 5)))});
+    }
+  }
+}
+
+TEST_CASE("S2 Boolean operations: nesting by central projection agrees with a tree per loop", "[boolean][s2]") {
+  // Two levels of nesting (a cap with a hole, in it an island with a hole
+  // of its own, whose box lies in both outer loops' boxes, and another cap
+  // beside them), and unions of random stars.
+  loop cap, hole, island, lake, other;
+  for (int k = 0; k < 8; ++k) {
+    cap.push_back(ll(45 * k, 60)), island.push_back(ll(45 * k + 10, 80));
+    other.push_back(ll(20 + 3 * std::cos(k * pi / 4), 30 + 3 * std::sin(k * pi / 4)));
+  }
+  for (int k = 7; k >= 0; --k) hole.push_back(ll(45 * k, 70)), lake.push_back(ll(45 * k + 20, 85));
+  std::vector<boolean::region_s2> regions{bsp::set_union(bsp::set_union(region({cap, hole}), region({island, lake})), region({other}))};
+  for (int t = 0; t < 6; ++t) {
+    auto star = [](double lon) {
+      loop l;
+      for (int i = 0; i < 24; ++i) {
+        double r = static_cast<double>(test::uniform(3, 25)), a = 2 * pi * (i + 0.5) / 24;
+        l.push_back(boolean::from_lonlat(Q(std::lround((lon + r * std::cos(a)) * 10), 10), Q(std::lround((10 + r * std::sin(a)) * 10), 10)));
+      }
+      return l;
+    };
+    regions.push_back(bsp::set_union(region({star(0)}), region({star(3)})));
+  }
+  std::size_t with_holes = 0;
+  for (auto const& r : regions) {
+    auto all = boolean::detail::loops_of(bsp::oriented_boundary(r));
+    auto c = boolean::detail::centre_of(all);
+    REQUIRE(c);
+    REQUIRE(bsp::classify(r, -*c) == std::optional<bool>(false));
+    auto copy = all;
+    auto projected = boolean::detail::nest_in_hemisphere(copy, *c);
+    REQUIRE(projected);
+    auto by_trees = boolean::detail::nest_by_trees(all, -*c);
+    REQUIRE(projected->size() == by_trees.size());
+    for (std::size_t i = 0; i < by_trees.size(); ++i) {
+      CHECK((*projected)[i].outer == by_trees[i].outer);
+      CHECK((*projected)[i].holes == by_trees[i].holes);
+      with_holes += !by_trees[i].holes.empty();
+    }
+    CHECK(boolean::area(*projected) == Approx(boolean::area(r)).epsilon(1e-11));
+  }
+  CHECK(with_holes >= 2); // the cap's and the island's polygons
+  // Loops around the whole sphere's middle lie in no open hemisphere: none.
+  loop band_north, band_south; // the region between them on their left
+  for (int k = 7; k >= 0; --k) band_north.push_back(ll(45 * k, 10));
+  for (int k = 0; k < 8; ++k) band_south.push_back(ll(45 * k, -10));
+  auto band = region({band_north, band_south});
+  auto all = boolean::detail::loops_of(bsp::oriented_boundary(band));
+  CHECK_FALSE(boolean::detail::nest_in_hemisphere(all, d(0, 0, 1)));
+  check_round_trip(band);
 }
 
 } // namespace boolean_spherical_tests

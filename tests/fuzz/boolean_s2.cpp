@@ -12,7 +12,9 @@
 //     and A − B = A − (A ∩ B), and inclusion–exclusion on areas
 //     (|A ∪ B| + |A ∩ B| = |A| + |B|, to 1e-9: areas are doubles);
 //   * the output loops read back into exactly the same region, every edge a
-//     minor arc; the whole sphere, which no loop bounds, is refused.
+//     minor arc; the whole sphere, which no loop bounds, is refused;
+//   * `combine` (no merged tree) gives loops that read back into the same
+//     region, with the same area.
 // Any failed check aborts, with the reason on standard error.
 #include "input.hpp"
 
@@ -22,6 +24,8 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace {
@@ -128,6 +132,30 @@ void check_output(boolean::region_s2 const& r, set_op op) {
   if (!same(back, r)) fail(std::string("the output loops do not bound the result (") + name(op) + ")");
 }
 
+/// `combine` on the operands (their boundaries read off their trees) must
+/// give polygons that read back into `r` exactly, with `r`'s area, or
+/// refuse the whole sphere.
+void check_combine(boolean::spherical_operand const& a, boolean::spherical_operand const& b, boolean::region_s2 const& r, set_op op) {
+  bool whole = empty(boolean::apply(set_op::difference, boolean::region_s2(true), r));
+  std::vector<boolean::spherical_polygon> polygons;
+  try {
+    polygons = boolean::combine(op, a, b);
+  } catch (std::invalid_argument const&) {
+    if (whole) return;
+    fail(std::string("combine refused a result that is not the whole sphere (") + name(op) + ")");
+  }
+  if (whole) fail(std::string("combine gave loops for the whole sphere (") + name(op) + ")");
+  boolean::region_s2 back(false);
+  for (auto const& p : polygons) {
+    std::vector<boolean::loop> loops{p.outer};
+    loops.insert(loops.end(), p.holes.begin(), p.holes.end());
+    back = boolean::apply(set_op::union_, back, boolean::spherical_region(loops));
+  }
+  if (!same(back, r)) fail(std::string("combine's loops do not bound the result (") + name(op) + ")");
+  if (std::abs(boolean::area(polygons) - boolean::area(r)) > 1e-9 * 4 * std::numbers::pi)
+    fail(std::string("combine's area differs from the result's (") + name(op) + ")");
+}
+
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(std::uint8_t const* data, std::size_t size) {
@@ -159,6 +187,7 @@ extern "C" int LLVMFuzzerTestOneInput(std::uint8_t const* data, std::size_t size
     if (bsp::classify(a, direction_of(d)) != *x) fail("an operand's label differs from the orientation tests");
   }
 
+  boolean::spherical_operand oa_set{a, bsp::oriented_boundary(a)}, ob_set{b, bsp::oriented_boundary(b)};
   double A = boolean::area(a), B = boolean::area(b), areas[4];
   boolean::region_s2 results[4] = {boolean::region_s2(false), boolean::region_s2(false), boolean::region_s2(false), boolean::region_s2(false)};
   for (auto op : {set_op::union_, set_op::intersection, set_op::difference, set_op::symmetric_difference}) {
@@ -172,6 +201,7 @@ extern "C" int LLVMFuzzerTestOneInput(std::uint8_t const* data, std::size_t size
              std::to_string(d[2]) + ")");
     }
     check_output(r, op);
+    check_combine(oa_set, ob_set, r, op);
   }
   auto const &U = results[0], &I = results[1], &D = results[2], &X = results[3];
   if (!same(U, boolean::apply(set_op::union_, X, I))) fail("A u B != (A xor B) u (A n B)");

@@ -81,7 +81,7 @@ boolean::operand plane_operand(std::string const& file, std::string const& fill)
   }
 }
 
-boolean::region_s2 sphere_region(std::string const& file) {
+boolean::spherical_operand sphere_operand(std::string const& file) {
   auto m = geometry::io::read_polygons(file);
   auto check = [&](boolean::ring const& ring) {
     for (auto const& v : ring)
@@ -93,7 +93,7 @@ boolean::region_s2 sphere_region(std::string const& file) {
     for (auto const& h : p.holes) check(h);
   }
   try {
-    return boolean::spherical_region(m);
+    return boolean::spherical_operand_of(m);
   } catch (boolean::invalid_polygon const& e) {
     throw usage_error(file + ": " + e.what());
   }
@@ -151,16 +151,22 @@ void bool_job::run() const {
   } else {
     if (!fill_rule.empty()) throw usage_error("--fill-rule: only for --geometry e2");
     if (ext == ".svg") throw usage_error(output + ": SVG output is for --geometry e2 (use .geojson or .wkt)");
-    auto A = sphere_region(a), B = sphere_region(b);
-    auto r = boolean::apply(operation(op), A, B);
-    geometry::io::multipolygon m;
+    stages say(progress);
+    say("reading and building " + a);
+    auto A = sphere_operand(a);
+    say("reading and building " + b);
+    auto B = sphere_operand(b);
+    say(op + " of the boundaries");
+    std::vector<boolean::spherical_polygon> polygons;
     try {
-      m = boolean::lonlat_polygons(r);
+      polygons = boolean::combine(operation(op), A, B);
     } catch (std::invalid_argument const& e) {
       throw usage_error("the result is the whole sphere, which no ring can bound");
     }
+    say("writing " + output);
+    auto m = boolean::lonlat_polygons(polygons);
     text = geojson ? geometry::io::to_geojson(m) : geometry::io::to_wkt(m);
-    double sr = boolean::area(r);
+    double sr = boolean::area(polygons);
     summary = {{"area", sr}, {"area_km2", sr * boolean::earth_radius_km * boolean::earth_radius_km}};
     summary.update(counts(m));
   }
