@@ -323,19 +323,38 @@ template <std::size_t N> std::array<integer, N> integer_multiple(std::array<rati
   return r;
 }
 
-/// Fills `a` from the integers `z`.
+/// Fills `a` from the integers `z`.  Past 190 bits the doubles are those of
+/// z / 2^s, with s the largest entry's bit length less 190: a positive
+/// multiple, which every predicate reads as the same vector (they are
+/// homogeneous in each argument, as on the integer multiples themselves),
+/// with the entries in the range that integers of at most 190 bits give,
+/// [1, 2^190), so no sum or product of them underflows or overflows where it
+/// would not for such integers.  A non-zero entry that would fall below 1
+/// there is NaN, and the filter leaves the vector to the exact stages.
 template <std::size_t N> void approximate(std::array<integer, N> const& z, approximation<N>& a) {
   a.integral = true;
+  std::array<std::size_t, N> bits{};
+  std::size_t top = 0;
   for (std::size_t i = 0; i < N; ++i) {
     mpz_srcptr num = z[i].backend().data();
-    std::size_t bits = mpz_sgn(num) == 0 ? 0 : mpz_sizeinbase(num, 2);
-    if (bits > 190) {
+    bits[i] = mpz_sgn(num) == 0 ? 0 : mpz_sizeinbase(num, 2);
+    top = std::max(top, bits[i]);
+  }
+  std::size_t const shift = top > 190 ? top - 190 : 0;
+  for (std::size_t i = 0; i < N; ++i) {
+    mpz_srcptr num = z[i].backend().data();
+    if (shift == 0 || bits[i] == 0) {
+      a.v[i] = mpz_get_d(num); // truncates: relative error below 2u
+      a.integral = a.integral && bits[i] <= 53;
+    } else if (bits[i] <= shift) {
       a.v[i] = std::numeric_limits<double>::quiet_NaN();
       a.integral = false;
-      continue;
+    } else {
+      long e = 0;
+      double m = mpz_get_d_2exp(&e, num); // truncates too
+      a.v[i] = std::ldexp(m, static_cast<int>(e - static_cast<long>(shift)));
+      a.integral = false;
     }
-    a.v[i] = mpz_get_d(num); // truncates: relative error below 2u
-    a.integral = a.integral && bits <= 53;
   }
   a.norm = 0;
   for (double x : a.v) a.norm = std::isnan(x) ? x : std::max(a.norm, std::fabs(x));

@@ -187,6 +187,57 @@ TEST_CASE("numbers outside the filter's range go exact and stay right", "[filter
   CHECK(filter_stats().fallbacks == s0.fallbacks + 1);
 }
 
+TEST_CASE("vectors past 190 bits: the filter reads them scaled by a power of two, and never a wrong sign", "[filter]") {
+  using big = boost::multiprecision::mpz_int;
+  auto random_big = [](int bits) {
+    big x = 1; // the top bit set: exactly `bits` bits
+    for (int b = 1; b < bits; ++b) x = 2 * x + test::uniform(0, 1);
+    return test::uniform(0, 1) ? x : big(-x);
+  };
+  int fallbacks_expected = 0, total = 0, wrong = 0;
+  auto const s0 = filter_stats();
+  for (int t = 0; t < 600; ++t) {
+    int bits = static_cast<int>(test::uniform(191, 700));
+    std::array<Q, 3> a{Q(random_big(bits)), Q(random_big(bits - 1)), Q(random_big(bits - 2))};
+    std::array<Q, 3> b{Q(random_big(bits)), Q(random_big(bits)), Q(random_big(bits - 3))};
+    std::array<Q, 3> c;
+    for (std::size_t k = 0; k < 3; ++k) c[k] = a[k] + b[k];
+    int kind = t % 3; // 0: dependent, 1: nudged by one unit, 2: independent
+    if (kind == 1) c[static_cast<std::size_t>(t % 2)] += 1;
+    if (kind == 2) c = {Q(random_big(bits)), Q(random_big(bits)), Q(random_big(bits))};
+    hvec<Q, 3> A(a), B(b), C(c);
+    // The doubles: each entry's value over 2^s (s the largest bit length
+    // less 190), truncated, and at least 1.
+    auto const& z = A.integer_view().big();
+    std::size_t top = 0;
+    for (auto const& x : z) top = std::max(top, mpz_sizeinbase(x.backend().data(), 2));
+    for (std::size_t k = 0; k < 3; ++k) {
+      double v = A.approx().v[k];
+      Q exact = Q(z[k]) / Q(big(1) << static_cast<unsigned>(top - 190));
+      CHECK(std::fabs(v) >= 1);
+      CHECK(std::fabs(v) < 0x1p190);
+      CHECK(abs(Q(v) - exact) <= abs(exact) * Q(std::ldexp(1.0, -51)));
+      CHECK((v > 0) == (z[k] > 0));
+    }
+    CHECK_FALSE(A.approx().integral);
+    Q truth = test::ref_det3(a, b, c);
+    ++total;
+    wrong += static_cast<int>(det_sign(A, B, C)) != truth.sign();
+    fallbacks_expected += kind != 2;
+  }
+  CHECK(total == 600);
+  CHECK(wrong == 0);
+  // Independent triples are decided in double; dependent and nudged ones
+  // (relative gaps near 2^-700) need exact arithmetic.
+  CHECK(filter_stats().fallbacks - s0.fallbacks <= static_cast<std::uint64_t>(fallbacks_expected) + 5);
+  CHECK(filter_stats().fallbacks - s0.fallbacks >= static_cast<std::uint64_t>(fallbacks_expected) / 2);
+  // An entry that would fall below 1 leaves the vector to the exact stages.
+  hvec<Q, 3> lopsided(std::array<Q, 3>{Q(big(1) << 400), Q(3), Q(-5)});
+  CHECK(std::isnan(lopsided.approx().v[1]));
+  CHECK(std::isnan(lopsided.approx().norm));
+  CHECK(lopsided.sign_at(2) == sign::negative);
+}
+
 TEST_CASE("every exact stage gives the true sign: double, 128-bit and GMP integers, rationals", "[filter]") {
   // Degenerate triples c = a + b (determinant 0) and nudged ones (±1 in one
   // coordinate), with integers of 20, 40 and 70 bits and with fractions, so
