@@ -418,7 +418,7 @@ int main(int argc, char** argv) {
   }
   if (o.json && !write_json(o, rows, true)) return 1;
   std::puts("\nP / L / V: output polygons, loops (outer loops and holes), vertices; area diff: |S2 − genbsp| / genbsp "
-            "(genbsp's area is the sum of its exact cells' areas in double)");
+            "(genbsp's area is 2π minus each output loop's turns, less 4π a hole, in double)");
   if (errors) std::fprintf(stderr, "bench_spherical: some cases failed\n");
   return errors ? 1 : 0;
 }

@@ -281,25 +281,25 @@ inline std::vector<loop> loops_of(std::vector<sphere_kernel::sub_hyperplane> con
     if (ha != hb) return ha < hb;
     return cr(ta, tb) == geometry::sign::negative;
   });
+  // Edge e of a loop may absorb the next, f, when both lie on one circle and
+  // the arc from e's start to f's end is still a minor arc.
+  auto joins = [&](std::size_t e, std::size_t f, direction const& end) {
+    return geometry::parallel(edges[e].normal, edges[f].normal) == geometry::sign::positive &&
+           geometry::dot_sign(geometry::cross(edges[e].from, end), edges[f].normal) == geometry::sign::positive;
+  };
   std::vector<loop> all;
+  std::vector<std::size_t> kept; // the loop's edges that remain, each absorbing the ones after it
   for (auto const& l : loops) {
+    kept.clear();
+    for (std::size_t i = 0, k = l.size(); i < k; ++i)
+      if (kept.empty() || !joins(kept.back(), l[i], edges[l[i]].to)) kept.push_back(l[i]);
+    // Across the seam: the last kept edge may absorb the first ones.
+    while (kept.size() > 3 && joins(kept.back(), kept.front(), edges[kept[1]].from)) kept.erase(kept.begin());
+    if (kept.size() < 3) continue;
     loop v;
-    std::vector<direction> normals;
-    for (auto e : l) v.push_back(edges[e].from), normals.push_back(edges[e].normal);
-    bool changed = true;
-    while (changed && v.size() > 3) {
-      changed = false;
-      for (std::size_t i = 0; i < v.size() && v.size() > 3; ++i) {
-        std::size_t n = v.size(), prev = (i + n - 1) % n, next = (i + 1) % n;
-        if (geometry::parallel(normals[prev], normals[i]) == geometry::sign::positive &&
-            geometry::dot_sign(geometry::cross(v[prev], v[next]), normals[i]) == geometry::sign::positive) {
-          v.erase(v.begin() + static_cast<std::ptrdiff_t>(i));
-          normals.erase(normals.begin() + static_cast<std::ptrdiff_t>(i));
-          changed = true;
-        }
-      }
-    }
-    if (v.size() >= 3) all.push_back(std::move(v));
+    v.reserve(kept.size());
+    for (auto e : kept) v.push_back(edges[e].from);
+    all.push_back(std::move(v));
   }
   return all;
 }

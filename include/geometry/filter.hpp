@@ -301,7 +301,10 @@ inline constexpr double two_53 = 0x1p53;
 /// Divides `z` by the greatest common divisor of its entries (when not 0).
 template <std::size_t M> void make_primitive(std::array<integer, M>& z) {
   integer g(0);
-  for (auto const& x : z) mpz_gcd(g.backend().data(), g.backend().data(), x.backend().data());
+  for (auto const& x : z) {
+    mpz_gcd(g.backend().data(), g.backend().data(), x.backend().data());
+    if (mpz_cmp_ui(g.backend().data(), 1) == 0) return; // the usual case, found before the last entry
+  }
   if (mpz_cmp_ui(g.backend().data(), 1) > 0)
     for (auto& x : z) mpz_divexact(x.backend().data(), x.backend().data(), g.backend().data());
 }
