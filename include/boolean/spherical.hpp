@@ -27,6 +27,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <unordered_map>
 #include <numbers>
 #include <optional>
 #include <stdexcept>
@@ -88,10 +89,15 @@ inline bool same_direction(direction const& a, direction const& b) {
   return geometry::parallel(a, b) == geometry::sign::positive;
 }
 
+/// An arc's bounding circle through a vertex of its loop, and that vertex.
+using arc_end = std::pair<sphere_kernel::hyperplane, direction>;
+
 /// The arcs of a loop with its region on their negative side (the tree
-/// builder's convention).  Repeated directions are dropped; an edge between
-/// antipodal directions has no minor arc and is refused.
-inline void add_arcs(loop l, std::vector<sphere_kernel::sub_hyperplane>& out) {
+/// builder's convention), and in `ends` (when given) each arc's bounding
+/// circles with the vertices they pass through.  Repeated directions are
+/// dropped; an edge between antipodal directions has no minor arc and is
+/// refused.
+inline void add_arcs(loop l, std::vector<sphere_kernel::sub_hyperplane>& out, std::vector<arc_end>* ends = nullptr) {
   loop v;
   for (auto& d : l)
     if (v.empty() || !same_direction(v.back(), d)) v.push_back(std::move(d));
@@ -102,6 +108,7 @@ inline void add_arcs(loop l, std::vector<sphere_kernel::sub_hyperplane>& out) {
     if (geometry::parallel(a, b) != geometry::sign::zero)
       throw invalid_polygon("an edge joins two antipodal points: no minor arc is defined between them");
     out.push_back(geometry::s2::arc(b, a));
+    if (ends) ends->push_back({out.back().bounds.front().original, b}), ends->push_back({out.back().bounds.back().original, a});
   }
 }
 
@@ -199,15 +206,20 @@ struct spherical_polygon {
 
 /// An operand of a spherical Boolean operation: its tree and the arcs it
 /// was built from, which `combine` classifies instead of building the
-/// merged tree.
-using spherical_operand = basic_operand<sphere_kernel>;
+/// merged tree; and, where the arcs come from loops, their bounding circles
+/// with the loops' vertices they pass through, so that an output arc ending
+/// at an input vertex takes that vertex instead of constructing it.
+struct spherical_operand : basic_operand<sphere_kernel> {
+  std::vector<detail::arc_end> ends;
+};
 
 /// The operand bounded by `loops` (see `spherical_region`), with its arcs.
 inline spherical_operand spherical_operand_of(std::vector<loop> const& loops) {
   std::vector<sphere_kernel::sub_hyperplane> arcs;
-  for (auto const& l : loops) detail::add_arcs(l, arcs);
+  std::vector<detail::arc_end> ends;
+  for (auto const& l : loops) detail::add_arcs(l, arcs, &ends);
   auto t = bsp::build_point_set<sphere_kernel>(arcs, true, false, bsp::random_order(20261128));
-  return {std::move(t), std::move(arcs)};
+  return {{std::move(t), std::move(arcs)}, std::move(ends)};
 }
 
 /// The operand of GeoJSON polygons in longitude/latitude degrees (see
@@ -217,7 +229,7 @@ inline spherical_operand spherical_operand_of(multipolygon const& lonlat) {
   if (lonlat.size() == 1) return spherical_operand_of(detail::loops_of_lonlat(lonlat.front()));
   auto t = spherical_region(lonlat);
   auto b = bsp::oriented_boundary(t);
-  return {std::move(t), std::move(b)};
+  return {{std::move(t), std::move(b)}, {}};
 }
 
 namespace detail {
@@ -237,12 +249,24 @@ struct arc_edge {
 /// more, so every edge is the minor arc between its ends.  At a vertex where
 /// the boundary touches itself a loop turns as far left as it can and is
 /// cut there.
-inline std::vector<loop> loops_of(std::vector<sphere_kernel::sub_hyperplane> const& pieces) {
+inline std::vector<loop> loops_of(std::vector<sphere_kernel::sub_hyperplane> const& pieces,
+                                  std::unordered_map<void const*, direction const*> const& known = {}) {
   std::vector<arc_edge> edges;
+  // An arc's start or end: a known vertex when its bounding circle is an
+  // input arc's (the circle's numbers, shared by every copy, identify it).
+  auto end_of = [&](sphere_kernel::sub_hyperplane const& piece, bool end) {
+    if (!known.empty()) {
+      auto const& b = end ? piece.bounds.back() : piece.bounds.front();
+      if (auto it = known.find(&b.original.n.integer_view()); it != known.end()) return *it->second;
+    }
+    return geometry::s2::endpoint(piece, end);
+  };
   for (auto const& p : pieces) {
     auto piece = geometry::s2::opposite(p);
     auto const& n = piece.support.n;
-    auto ends = geometry::s2::endpoints(piece);
+    std::vector<direction> ends;
+    if (piece.bounds.size() == 2) ends = {end_of(piece, false), end_of(piece, true)};
+    else ends = geometry::s2::endpoints(piece);
     std::vector<direction> pts;
     if (ends.empty()) {
       std::size_t k = 0;
@@ -450,6 +474,7 @@ inline std::vector<spherical_polygon> spherical_polygons(region_s2 const& r) {
       throw std::invalid_argument("boolean::spherical_polygons: the region is the whole sphere");
     return {};
   }
+  if (all.size() == 1) return {{std::move(all.front()), {}}}; // the region is the left of its one loop
   if (auto c = detail::centre_of(all); c && bsp::classify(r, -*c) == false)
     if (auto out = detail::nest_in_hemisphere(all, *c)) return std::move(*out);
   // A point outside the region, off every loop.
@@ -469,8 +494,17 @@ inline std::vector<spherical_polygon> spherical_polygons(region_s2 const& r) {
 /// reads it).  The same polygons as that.  Throws `std::invalid_argument`
 /// when the result is the whole sphere.
 inline std::vector<spherical_polygon> combine(set_op op, spherical_operand const& a, spherical_operand const& b) {
+  // The input vertices by the arcs' bounding circles through them, either way round.
+  std::unordered_map<void const*, direction const*> known;
+  for (auto const* o : {&a, &b})
+    for (auto const& [circle, v] : o->ends) {
+      known.emplace(&circle.n.integer_view(), &v);
+      known.emplace(&(-circle.n).integer_view(), &v);
+    }
   auto all = detail::loops_of(bsp::merged_boundary(a.tree, a.boundary, b.tree, b.boundary,
-                                                   [op](bool x, bool y) { return detail::label_op(op, x, y); }));
+                                                   [op](bool x, bool y) { return detail::label_op(op, x, y); }),
+                              known);
+  if (all.size() == 1) return {{std::move(all.front()), {}}}; // the result is the left of its one loop
   if (!all.empty())
     if (auto c = detail::centre_of(all)) {
       // −c outside the result: both operands' labels there decide it (none on a boundary).

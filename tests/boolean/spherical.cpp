@@ -244,6 +244,30 @@ TEST_CASE("S2 Boolean operations: combine without the merged tree gives the merg
     check_combine({octant}, {north});    // vertices and arcs on the axes and the equator
     check_combine({north}, {square});    // a half circle through the square
   }
+  SECTION("an operand's arcs end at its loops' vertices, which combine takes instead of constructing them") {
+    auto A = boolean::spherical_operand_of({square, cap, hole});
+    REQUIRE(A.boundary.size() == 4 + 8 + 8);
+    REQUIRE(A.ends.size() == 2 * A.boundary.size());
+    for (std::size_t i = 0; i < A.boundary.size(); ++i) {
+      auto const& arc = A.boundary[i];
+      CHECK(A.ends[2 * i].first == arc.bounds.front().original);
+      CHECK(A.ends[2 * i + 1].first == arc.bounds.back().original);
+      CHECK(A.ends[2 * i].second == geometry::s2::endpoint(arc, false));
+      CHECK(A.ends[2 * i + 1].second == geometry::s2::endpoint(arc, true));
+      CHECK(geometry::dot_sign(A.ends[2 * i].first.n, A.ends[2 * i].second) == geometry::sign::zero);
+    }
+    // Without the table (a boundary read off a tree), the same polygons.
+    auto B = boolean::spherical_operand_of({shifted});
+    boolean::spherical_operand A0{{A.tree, A.boundary}, {}}, B0{{B.tree, B.boundary}, {}};
+    for (auto op : {set_op::union_, set_op::intersection, set_op::difference}) {
+      auto with = boolean::combine(op, A, B), without = boolean::combine(op, A0, B0);
+      REQUIRE(with.size() == without.size());
+      for (std::size_t i = 0; i < with.size(); ++i) {
+        CHECK(with[i].outer == without[i].outer);
+        CHECK(with[i].holes == without[i].holes);
+      }
+    }
+  }
   SECTION("holes and islands") {
     check_combine({cap, hole}, {island});   // a polygon with a hole, an island in the hole
     check_combine({cap, hole}, {inner});

@@ -187,7 +187,7 @@ extern "C" int LLVMFuzzerTestOneInput(std::uint8_t const* data, std::size_t size
     if (bsp::classify(a, direction_of(d)) != *x) fail("an operand's label differs from the orientation tests");
   }
 
-  boolean::spherical_operand oa_set{a, bsp::oriented_boundary(a)}, ob_set{b, bsp::oriented_boundary(b)};
+  boolean::spherical_operand oa_set{{a, bsp::oriented_boundary(a)}, {}}, ob_set{{b, bsp::oriented_boundary(b)}, {}};
   double A = boolean::area(a), B = boolean::area(b), areas[4];
   boolean::region_s2 results[4] = {boolean::region_s2(false), boolean::region_s2(false), boolean::region_s2(false), boolean::region_s2(false)};
   for (auto op : {set_op::union_, set_op::intersection, set_op::difference, set_op::symmetric_difference}) {

@@ -81,16 +81,22 @@ template <number FT> sub_hyperplane<FT> arc(point<FT> const& a, point<FT> const&
 }
 
 
+/// The start (`end` false) or the end of an arc that has a bound: where
+/// its first or last bound meets its circle (exact, unnormalised).
+template <number FT> point<FT> endpoint(sub_hyperplane<FT> const& s, bool end) {
+  if (!end) {
+    auto const& b = s.bounds.front().line();
+    return lift(s.support.n, s.axis, {b[1], FT(-b[0])});
+  }
+  auto const& b = s.bounds.back().line();
+  return lift(s.support.n, s.axis, {FT(-b[1]), b[0]});
+}
+
 /// The endpoints of an arc: none for a whole circle, else start and end
 /// (exact, unnormalised; for a half circle they are antipodal).
 template <number FT> std::vector<point<FT>> endpoints(sub_hyperplane<FT> const& s) {
-  std::vector<point<FT>> out;
-  if (s.bounds.empty()) return out;
-  auto const& b0 = s.bounds.front().line();
-  auto const& b1 = s.bounds.back().line();
-  out.push_back(lift(s.support.n, s.axis, {b0[1], FT(-b0[0])}));
-  out.push_back(lift(s.support.n, s.axis, {FT(-b1[1]), b1[0]}));
-  return out;
+  if (s.bounds.empty()) return {};
+  return {endpoint(s, false), endpoint(s, true)};
 }
 
 /// @}
