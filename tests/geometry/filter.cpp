@@ -105,7 +105,10 @@ TEST_CASE("E3: points 1 ulp off a plane", "[filter][e3]") {
 TEST_CASE("S2: the circle through nearly antipodal directions", "[filter][s2]") {
   plain_double plain;
   counts c;
-  for (int t = 0; t < 400; ++t) {
+  // The same inputs whichever test cases ran before; plain double errs on
+  // about 1 in 200 of them (14 to 26 of 4000 over six seeds tried).
+  test::rng().seed(20261122);
+  for (int t = 0; t < 4000; ++t) {
     double ax = test::random_decimal(4, 1).convert_to<double>() + 2, ay = test::random_decimal(4, 1).convert_to<double>(),
            az = test::random_decimal(4, 1).convert_to<double>();
     // b is -a moved by a few ulps: the circle through a and b is barely determined.

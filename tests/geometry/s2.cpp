@@ -4,6 +4,7 @@
 #include <geometry/s2.hpp>
 
 #include <numbers>
+#include <random>
 
 using namespace geometry;
 using test::as;
@@ -151,6 +152,37 @@ TEMPLATE_TEST_CASE("S2 arcs split by length and report coincidence", "[s2]", dou
     double sum = (r.negative ? s2::length(*r.negative) : 0.0) + (r.positive ? s2::length(*r.positive) : 0.0);
     CHECK(sum == Approx(s2::length(s)).epsilon(1e-12));
   }
+}
+
+TEST_CASE("S2 arcs are bounded as splitting the whole circle by the circles through their ends would bound them", "[s2]") {
+  // `arc` restricts the circles through its ends from the ends themselves
+  // (`restricted_through`); splitting restricts them from the circles.
+  std::mt19937_64 rng(20261207);
+  std::uniform_real_distribution<double> u(-1, 1);
+  int compared = 0;
+  for (int t = 0; t < 4000; ++t) {
+    auto p = t % 2 ? dir<Q>(Q(u(rng)), Q(u(rng)), Q(u(rng))) : random_dir<Q>(false);
+    auto q = t % 2 ? dir<Q>(Q(u(rng)), Q(u(rng)), Q(u(rng))) : random_dir<Q>(false);
+    if (p.is_zero() || q.is_zero() || parallel(p, q) != sign::zero) continue;
+    ++compared;
+    auto a = s2::arc(p, q);
+    auto c = s2::circle_through(p, q);
+    auto half = s2::split(s2::whole_circle(c), s2::hyperplane<Q>(cross(c.n, p))).positive;
+    REQUIRE(half);
+    auto b = s2::split(*half, s2::hyperplane<Q>(cross(q, c.n))).positive;
+    REQUIRE(b);
+    CHECK(a.support == b->support);
+    CHECK(a.axis == b->axis);
+    REQUIRE(a.bounds.size() == 2);
+    REQUIRE(b->bounds.size() == 2);
+    for (std::size_t i = 0; i < 2; ++i) {
+      CHECK(a.bounds[i].original == b->bounds[i].original);
+      CHECK(a.bounds[i].restricted == b->bounds[i].restricted);
+    }
+    CHECK(s2::endpoint(a, false) == p);
+    CHECK(s2::endpoint(a, true) == q);
+  }
+  CHECK(compared > 3500);
 }
 
 } // namespace geometry_s2_tests

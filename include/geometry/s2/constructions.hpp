@@ -71,13 +71,40 @@ template <number FT> split_result<sub_hyperplane<FT>> split(sub_hyperplane<FT> c
   return detail::split_piece(s, h, detail::arc_split);
 }
 
-/// The minor arc from `a` to `b` (independent directions), on `circle_through(a, b)`.
+/// `restrict_to(p, k, p × x)` for a direction `x` on the circle `p`
+/// (`sign` +1), or of `x × p` (`sign` −1), from `x` alone: the minor of p
+/// and p × x on coordinates k and i is ∓|p|²·x_m (m the third index; minus
+/// when i follows k cyclically), since p × (p × x) = −|p|²·x.  A positive
+/// multiple of `restrict_to`'s vector, of x's degree instead of three times
+/// p's, and the same signs as `restrict_to` takes (`neg`, `flip`).
+template <number FT> hvec<FT, 2> restricted_through(hvec<FT, 3> const& p, std::size_t k, hvec<FT, 3> const& x, int sign) {
+  bool negate = (p.sign_at(k) == geometry::sign::negative) != (sign < 0), flip = geometry::detail::restriction_flips(p, k);
+  return construct<2>(
+      [k, negate, flip](auto const& X) {
+        std::array<std::remove_cvref_t<decltype(X[0])>, 2> r;
+        for (std::size_t i = 0, j = 0; i < 3; ++i) {
+          if (i == k) continue;
+          auto const& v = X[3 - k - i];
+          bool minus = (i == (k + 1) % 3) != negate;
+          r[j++] = minus ? -v : v;
+        }
+        if (flip) r[0] = -r[0];
+        return r;
+      },
+      x);
+}
+
+/// The minor arc from `a` to `b` (independent directions), on
+/// `circle_through(a, b)`: bounded by the circles through a and through b
+/// perpendicular to it, each restricted to it from its point
+/// (`restricted_through`), as splitting the whole circle by them
+/// would bound it.
 template <number FT> sub_hyperplane<FT> arc(point<FT> const& a, point<FT> const& b, hyperplane_tag tag = no_tag) {
   auto c = circle_through(a, b, tag);
-  // Circles through a (and b) perpendicular to c, keeping the other endpoint.
   hyperplane<FT> through_a(cross(c.n, a)), through_b(cross(b, c.n));
-  auto s = split(whole_circle(c), through_a).positive;
-  return *split(*s, through_b).positive;
+  std::size_t k = dominant_axis(c.n);
+  auto ra = restricted_through(c.n, k, a, +1), rb = restricted_through(c.n, k, b, -1);
+  return {std::move(c), k, {{std::move(through_a), std::move(ra)}, {std::move(through_b), std::move(rb)}}};
 }
 
 
