@@ -231,6 +231,22 @@ TEST_CASE("S2 Boolean operations: combine without the merged tree gives the merg
   for (int k = 7; k >= 0; --k) hole.push_back(ll(45 * k, 85));
   loop octant{d(1, 0, 0), d(0, 1, 0), d(0, 0, 1)};
   loop north{ll(0, 0), ll(90, 0), ll(180, 0), ll(-90, 0)};
+  SECTION("areas from the output loops against closed forms") {
+    // Gauss–Bonnet on the loops, against the octant (π/2), the lune between
+    // the northern hemisphere and the tilted one (3π/2, read off the merged
+    // tree: it lies in no open hemisphere) and the square's fan area.
+    auto O = boolean::spherical_operand_of({octant}), N = boolean::spherical_operand_of({north});
+    CHECK(boolean::area(boolean::combine(set_op::union_, O, O)) == Approx(pi / 2).epsilon(1e-14));
+    CHECK(boolean::area(boolean::combine(set_op::intersection, O, N)) == Approx(pi / 2).epsilon(1e-14));
+    auto T = boolean::spherical_operand_of({{d(1, 0, 1), d(0, 1, 0), d(-1, 0, -1), d(0, -1, 0)}});
+    CHECK(boolean::area(boolean::combine(set_op::intersection, N, T)) == Approx(1.5 * pi).epsilon(1e-13));
+    std::vector<std::array<double, 3>> sv{unit(-1, -1), unit(1, -1), unit(1, 1), unit(-1, 1)};
+    auto S = boolean::spherical_operand_of({square});
+    CHECK(boolean::area(boolean::combine(set_op::union_, S, S)) == Approx(fan_area(sv, {1, 0, 0})).epsilon(1e-12));
+    // The square's complement: 4π less it, with its one loop.
+    auto R = boolean::spherical_operand_of({reversed});
+    CHECK(boolean::area(boolean::combine(set_op::union_, R, R)) == Approx(4 * pi - fan_area(sv, {1, 0, 0})).epsilon(1e-12));
+  }
   SECTION("degenerate pairs") {
     check_combine({square}, {square});   // identical
     check_combine({square}, {reversed}); // complements: the union is the whole sphere
