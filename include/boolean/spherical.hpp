@@ -370,24 +370,13 @@ inline std::vector<spherical_polygon> nest_by_trees(std::vector<loop> all, direc
   return out;
 }
 
-/// A unit vector of doubles in the direction of `d`, from its integer
-/// coordinates (scaled by powers of two, so none overflows).
+/// A unit vector of doubles in the direction of `d`: from the filter's
+/// doubles (`unit_doubles`), or from its rationals when they have none.
 inline std::array<double, 3> unit_of(direction const& d) {
-  auto const& z = d.integer_view();
-  std::array<double, 3> m{};
-  std::array<long, 3> e{};
-  for (std::size_t k = 0; k < 3; ++k) {
-    if (z.mid()) m[k] = static_cast<double>(z.z128[k]);
-    else m[k] = mpz_get_d_2exp(&e[k], z.big()[k].backend().data());
-  }
-  long top = std::numeric_limits<long>::min();
-  for (std::size_t k = 0; k < 3; ++k)
-    if (m[k] != 0) top = std::max(top, e[k]);
-  std::array<double, 3> r{};
-  for (std::size_t k = 0; k < 3; ++k)
-    if (m[k] != 0) r[k] = std::ldexp(m[k], static_cast<int>(std::max(e[k] - top, -1000L)));
-  double l = std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
-  return {r[0] / l, r[1] / l, r[2] / l};
+  auto u = geometry::detail::unit_doubles(d);
+  if (!u) return geometry::s2::to_unit(d);
+  double l = std::sqrt((*u)[0] * (*u)[0] + (*u)[1] * (*u)[1] + (*u)[2] * (*u)[2]);
+  return {(*u)[0] / l, (*u)[1] / l, (*u)[2] / l};
 }
 
 /// A direction near the middle of the loops' vertices, on integers below

@@ -7,8 +7,11 @@
 
 #include "filter.hpp"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
+#include <optional>
 #include <type_traits>
 
 namespace geometry {
@@ -192,5 +195,29 @@ template <number FT, std::size_t M> hvec<FT, M> mirror(hvec<FT, M> const& r) {
 }
 
 /// @}
+
+namespace detail {
+/// `v` in doubles, scaled by a positive factor so that its largest
+/// coordinate is 1 in magnitude; nothing when it is zero or when the
+/// filter's approximation has no double for an entry (tiny beside the
+/// others: see `approximate`).
+template <number FT, std::size_t N> std::optional<std::array<double, N>> unit_doubles(hvec<FT, N> const& v) {
+  std::array<double, N> d;
+  if constexpr (exact_field<FT>) {
+    d = v.approx().v;
+  } else {
+    for (std::size_t i = 0; i < N; ++i) d[i] = v[i];
+  }
+  double m = 0;
+  for (double x : d) {
+    if (std::isnan(x)) return std::nullopt;
+    m = std::max(m, std::fabs(x));
+  }
+  if (!(m > 0) || !std::isfinite(m)) return std::nullopt;
+  for (double& x : d) x /= m;
+  return d;
+}
+
+} // namespace detail
 
 } // namespace geometry

@@ -332,23 +332,6 @@ template <number FT> std::optional<FT> volume(polytope<FT> const& c) {
 
 namespace geometry::detail {
 
-/// `v` in doubles, scaled by a positive factor so that its largest
-/// coordinate is 1 in magnitude; nothing when it is zero or too large for the
-/// filter's approximation.
-template <number FT, std::size_t N> std::optional<std::array<double, N>> unit_doubles(hvec<FT, N> const& v) {
-  std::array<double, N> d;
-  if constexpr (exact_field<FT>) {
-    d = v.approx().v;
-  } else {
-    for (std::size_t i = 0; i < N; ++i) d[i] = v[i];
-  }
-  double m = 0;
-  for (double x : d) m = std::max(m, std::fabs(x));
-  if (!(m > 0) || !std::isfinite(m)) return std::nullopt;
-  for (double& x : d) x /= m;
-  return d;
-}
-
 /// The vertices of the bounded polygon `s` in doubles, computed from the
 /// doubles of its planes as `homogeneous_vertices` computes them exactly (no
 /// exact construction: for estimates, such as where to cut); false when a
