@@ -224,7 +224,7 @@ template <number FT, class Bound>
 oriented_side whole_side(hvec<FT, 4> const& support, std::size_t axis, std::vector<Bound> const& bounds,
                          hvec<FT, 4> const& h) {
   std::size_t n = bounds.size();
-  if (n < 3) return oriented_side::on;
+  if (n < 3 || shares_numbers(support, h)) return oriented_side::on; // in h itself: split tells
   std::optional<detail::restricted_vertex_filter> filter;
   if constexpr (exact_field<FT>)
     if (filter_config().enabled) [[likely]]
@@ -254,9 +254,14 @@ oriented_side whole_side(hvec<FT, 4> const& support, std::size_t axis, std::vect
 template <number FT, class Bound>
 oriented_side whole_side(hvec<FT, 3> const& support, std::size_t axis, std::vector<Bound> const& bounds,
                          hvec<FT, 3> const& h) {
-  if (bounds.size() != 2) return oriented_side::on;
-  sign s = restricted_det_sign(support, axis, h, bounds[0].line());  // side of the start point
-  sign e = -restricted_det_sign(support, axis, h, bounds[1].line()); // side of the end point
+  if (bounds.size() != 2 || shares_numbers(support, h)) return oriented_side::on; // in h itself: split tells
+  // An end whose bound is h itself (or its opposite, by shared numbers) lies on h.
+  auto on_h = [&h](Bound const& b) {
+    if constexpr (requires { b.original.n; }) return shares_numbers(b.original.n, h);
+    else return false;
+  };
+  sign s = on_h(bounds[0]) ? sign::zero : restricted_det_sign(support, axis, h, bounds[0].line());   // side of the start point
+  sign e = on_h(bounds[1]) ? sign::zero : -restricted_det_sign(support, axis, h, bounds[1].line()); // side of the end point
   if (s == sign::zero && e == sign::zero) return oriented_side::on;
   if (s != sign::negative && e != sign::negative) return oriented_side::positive;
   if (s != sign::positive && e != sign::positive) return oriented_side::negative;

@@ -301,9 +301,12 @@ inline constexpr double two_53 = 0x1p53;
 /// Divides `z` by the greatest common divisor of its entries (when not 0).
 template <std::size_t M> void make_primitive(std::array<integer, M>& z) {
   integer g(0);
-  for (auto const& x : z) {
-    mpz_gcd(g.backend().data(), g.backend().data(), x.backend().data());
+  std::size_t i = 0;
+  if constexpr (M >= 2) // the first two at once: no copy of the first into g
+    mpz_gcd(g.backend().data(), z[0].backend().data(), z[1].backend().data()), i = 2;
+  for (; i < M; ++i) {
     if (mpz_cmp_ui(g.backend().data(), 1) == 0) return; // the usual case, found before the last entry
+    mpz_gcd(g.backend().data(), g.backend().data(), z[i].backend().data());
   }
   if (mpz_cmp_ui(g.backend().data(), 1) > 0)
     for (auto& x : z) mpz_divexact(x.backend().data(), x.backend().data(), g.backend().data());
@@ -695,6 +698,17 @@ public:
     return s_->integers(negated_);
   }
 
+  /// Over an exact field: the address of the numbers this vector shares
+  /// with its copies and with their opposites (the same for `v` and `-v`,
+  /// whatever their values; default-constructed zero vectors all share
+  /// one).  Tells, without arithmetic, that two vectors are one object or
+  /// opposite ones; equal vectors made apart have different ones.
+  void const* identity() const noexcept
+    requires is_exact
+  {
+    return s_.get();
+  }
+
   /// The opposite vector; over an exact field it shares this one's numbers.
   hvec operator-() const {
     hvec r(*this);
@@ -742,6 +756,18 @@ private:
   /// Exact fields: this is the opposite of the shared vector.
   [[no_unique_address]] std::conditional_t<is_exact, bool, no_flag> negated_{};
 };
+
+/// Whether `a` and `b` are one vector or opposite ones by the numbers they
+/// share (`hvec::identity`), decided without arithmetic: over an exact field
+/// each non-zero one then lies in the other's hyperplane; over double,
+/// never.  False says nothing.
+template <number FT, std::size_t N> bool shares_numbers(hvec<FT, N> const& a, hvec<FT, N> const& b) noexcept {
+  if constexpr (exact_field<FT>) {
+    return a.identity() == b.identity();
+  } else {
+    return false;
+  }
+}
 
 namespace detail {
 

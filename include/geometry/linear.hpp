@@ -59,8 +59,23 @@ template <number FT> sign det_sign(hvec<FT, 3> const& a, hvec<FT, 3> const& b, h
 }
 
 /// Whether `a` and `b` are positive (+1) or negative (−1) multiples of each
-/// other, or independent (0).  Both must be non-zero.
+/// other, or independent (0).  Both must be non-zero.  Over an exact field,
+/// one vector or opposite ones (shared numbers) are told without
+/// arithmetic, and where the first minor vanishes the primitive integer
+/// coordinates, equal or opposite exactly for parallel vectors, decide.
 template <number FT, std::size_t N> sign parallel(hvec<FT, N> const& a, hvec<FT, N> const& b) {
+  if constexpr (exact_field<FT>) {
+    if (shares_numbers(a, b)) {
+      std::size_t k = 0;
+      while (k + 1 < N && a.sign_at(k) == sign::zero) ++k;
+      return a.sign_at(k) == b.sign_at(k) ? sign::positive : sign::negative;
+    }
+    if (filtered_sign([](auto const& x, auto const& y) { return x[0] * y[1] - x[1] * y[0]; }, a, b) != sign::zero)
+      return sign::zero;
+    if (a.integer_view() == b.integer_view()) return sign::positive;
+    if (a.integer_view() == (-b).integer_view()) return sign::negative;
+    return sign::zero;
+  }
   for (std::size_t i = 0; i < N; ++i)
     for (std::size_t j = i + 1; j < N; ++j) {
       auto minor = [i, j](auto const& x, auto const& y) { return x[i] * y[j] - x[j] * y[i]; };

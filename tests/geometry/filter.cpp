@@ -166,6 +166,39 @@ TEST_CASE("the filter certifies exact zeros without exact arithmetic when every 
   CHECK(s1.fallbacks == s0.fallbacks);
 }
 
+TEST_CASE("parallel: shared numbers without arithmetic, else the primitive integers", "[filter]") {
+  auto v = [](Q x, Q y, Q z) { return hvec<Q, 3>(std::array<Q, 3>{x, y, z}); };
+  auto a = v(Q(3, 7), Q(-5, 11), Q(2, 13));
+  auto copy = a, opposite = -a;
+  auto apart = v(Q(6, 7), Q(-10, 11), Q(4, 13)); // 2a, made apart
+  CHECK(shares_numbers(a, copy));
+  CHECK(shares_numbers(a, opposite));
+  CHECK_FALSE(shares_numbers(a, apart));
+  auto s0 = filter_stats();
+  CHECK(parallel(a, copy) == sign::positive);
+  CHECK(parallel(a, opposite) == sign::negative);
+  CHECK(parallel(opposite, a) == sign::negative);
+  CHECK(filter_stats().fallbacks == s0.fallbacks); // told by the shared numbers
+  CHECK(parallel(a, apart) == sign::positive);
+  CHECK(parallel(a, -apart) == sign::negative);
+  // The first minor vanishes, the vectors are independent.
+  CHECK(parallel(v(Q(0), Q(0), Q(1)), v(Q(0), Q(1), Q(1))) == sign::zero);
+  CHECK(parallel(v(Q(1), Q(2), Q(3)), v(Q(2), Q(4), Q(5))) == sign::zero);
+  CHECK(parallel(v(Q(1), Q(2), Q(3)), v(Q(-2), Q(-4), Q(-6))) == sign::negative);
+  // Against the definition (every 2×2 minor zero, then the dot product's
+  // sign) on random small vectors, many of them parallel.
+  for (int i = 0; i < 2000; ++i) {
+    auto r = [] { return Q(test::uniform(-3, 3)); };
+    auto p = v(r(), r(), r());
+    auto k = Q(test::uniform(-2, 2));
+    auto q = test::uniform(0, 1) ? v(k * p[0], k * p[1], k * p[2]) : v(r(), r(), r());
+    if (p.is_zero() || q.is_zero()) continue;
+    bool dependent = p[0] * q[1] == p[1] * q[0] && p[0] * q[2] == p[2] * q[0] && p[1] * q[2] == p[2] * q[1];
+    Q d = p[0] * q[0] + p[1] * q[1] + p[2] * q[2];
+    CHECK(parallel(p, q) == (!dependent ? sign::zero : d > 0 ? sign::positive : sign::negative));
+  }
+}
+
 TEST_CASE("switching the filter off makes every evaluation exact, with the same signs", "[filter]") {
   std::vector<std::array<Q, 3>> v;
   for (int i = 0; i < 300; ++i) v.push_back({test::random_decimal(), test::random_decimal(), test::random_decimal()});

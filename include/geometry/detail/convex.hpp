@@ -50,8 +50,14 @@ region_split<Bound> split_arc(std::vector<Bound> const& arc, Bound const& hp, Bo
     return {std::vector<Bound>{b, hn}, std::vector<Bound>{hp, b}};
   }
   auto const &b0 = arc[0], &b1 = arc[1];
-  sign s = det_sign(h, b0.line());  // side of the start point
-  sign e = det_sign(b1.line(), h);  // side of the end point
+  // An end whose bound is the splitting hyperplane itself (or its opposite,
+  // by shared numbers) lies on it.
+  auto on_h = [&hp](Bound const& b) {
+    if constexpr (requires { b.original.n; }) return shares_numbers(b.original.n, hp.original.n);
+    else return false;
+  };
+  sign s = on_h(b0) ? sign::zero : det_sign(h, b0.line());  // side of the start point
+  sign e = on_h(b1) ? sign::zero : det_sign(b1.line(), h);  // side of the end point
   if (s == sign::zero && e == sign::zero) {
     // A half circle whose both ends lie on h: its midpoint is b₀ itself.
     return dot_sign(h, b0.line()) == sign::positive ? only_positive(arc) : only_negative(arc);
