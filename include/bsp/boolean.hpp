@@ -10,9 +10,12 @@
 /// `op(label of a, label of b)`; the result is then reduced.
 #pragma once
 
+#include "concepts/join.hpp"
 #include "point_set.hpp"
 
+#include <cstddef>
 #include <functional>
+#include <optional>
 #include <tuple>
 #include <vector>
 #include <type_traits>
@@ -95,48 +98,104 @@ namespace detail {
 /// Both sides of a piece go down together while it stays off the hyperplanes
 /// it meets; where it lies in one (at node m), they part: the piece goes down
 /// the child on its negative side, and each part that comes out goes down the
-/// other child from m.  The same pieces, labels and order as pushing `s`
-/// down the whole tree from each side in turn, without descending twice from
-/// the root.
+/// other child from m.  Without descending twice from the root.  With
+/// `rejoin`, parts of a split whose labels agree are put back together
+/// (`rejoiner`), so a piece comes out cut only where a label on one of its
+/// sides changes, or where a neighbouring part was cut.
+/// Joins the pieces `out[first..]` where one continues another with the same
+/// labels (`G::join`), until none does; skipped past `limit` pieces, where
+/// the pairs to try would cost more than the pieces they save.
+template <geometry G, class R>
+void join_runs(std::vector<std::pair<typename G::sub_hyperplane, R>>& out, std::size_t first, std::size_t limit = 64) {
+  if constexpr (joining_geometry<G>) {
+    if (out.size() - first < 2 || out.size() - first > limit) return;
+    for (std::size_t i = first; i < out.size(); ++i)
+      for (std::size_t j = first; j < out.size();) {
+        std::optional<typename G::sub_hyperplane> u;
+        if (j != i && out[j].second == out[i].second) {
+          u = G::join(out[i].first, out[j].first);
+          if (!u) u = G::join(out[j].first, out[i].first);
+        }
+        if (!u) {
+          ++j;
+          continue;
+        }
+        out[i].first = std::move(*u);
+        if (j != out.size() - 1) out[j] = std::move(out.back());
+        if (i == out.size() - 1) i = j; // the joined piece moved into j's place
+        out.pop_back();
+        j = first; // the longer piece may continue another
+      }
+  }
+}
+
 template <geometry G, class N, label L>
 void labels_across(tree<G, N, L> const& t, typename G::sub_hyperplane s,
-                   std::vector<std::tuple<typename G::sub_hyperplane, L, L>>& out) {
+                   std::vector<std::pair<typename G::sub_hyperplane, std::pair<L, L>>>& out, bool rejoin) {
+  std::size_t const first = out.size();
   using S = typename G::sub_hyperplane;
-  std::vector<std::pair<S, node_id>> stack; // parts of split pieces, both sides still together
+  using J = rejoiner<S, std::pair<L, L>>;
+  struct work {
+    S piece;
+    node_id m;
+    std::size_t record;
+    int side;
+  };
+  J parts(out, rejoin);
+  std::vector<work> stack; // parts of split pieces, both sides still together
   std::vector<std::pair<S, L>> below, across;
-  auto descend = [&](S piece, node_id m) {
+  stack.push_back({std::move(s), t.root(), J::none, 0});
+  while (!stack.empty()) {
+    auto w = std::move(stack.back());
+    stack.pop_back();
     for (;;) {
-      if (t.is_leaf(m)) {
-        out.emplace_back(std::move(piece), t.leaf_data(m), t.leaf_data(m));
-        return;
+      if (t.is_leaf(w.m)) {
+        auto const& l = t.leaf_data(w.m);
+        parts.whole(w.record, w.side, std::move(w.piece), {l, l});
+        break;
       }
-      if (int w = whole_side<G>(piece, t.splitter(m))) {
-        m = t.child(m, w);
+      if (int side = whole_side<G>(w.piece, t.splitter(w.m))) {
+        w.m = t.child(w.m, side);
         continue;
       }
-      auto r = G::split(piece, t.splitter(m));
+      auto r = G::split(w.piece, t.splitter(w.m));
       if (r.is_coincident()) {
         int c = static_cast<int>(r.coincident); // +1: the piece faces as m's hyperplane does
         below.clear();
-        push_down(t, std::move(piece), t.child(m, -c), -1, below);
-        for (auto& [part, lneg] : below) {
+        push_down_rejoined(t, std::move(w.piece), t.child(w.m, -c), -1, below, rejoin);
+        if (below.size() == 1) {
           across.clear();
-          push_down(t, std::move(part), t.child(m, c), +1, across);
-          for (auto& [q, lpos] : across) out.emplace_back(std::move(q), lneg, lpos);
+          push_down_rejoined(t, std::move(below.front().first), t.child(w.m, c), +1, across, rejoin);
+          if (across.size() == 1) { // whole, one label on each side
+            parts.whole(w.record, w.side, std::move(across.front().first), {below.front().second, across.front().second});
+            break;
+          }
+          for (auto& [q, lpos] : across) parts.emit(std::move(q), {below.front().second, lpos});
+        } else {
+          for (auto& [part, lneg] : below) {
+            across.clear();
+            push_down_rejoined(t, std::move(part), t.child(w.m, c), +1, across, rejoin);
+            for (auto& [q, lpos] : across) parts.emit(std::move(q), {lneg, lpos});
+          }
         }
-        return;
+        parts.broken(w.record, w.side);
+        break;
       }
-      if (r.negative) stack.emplace_back(std::move(*r.negative), t.negative(m));
-      if (r.positive) stack.emplace_back(std::move(*r.positive), t.positive(m));
-      return;
+      if (r.negative && r.positive) {
+        auto k = parts.split(std::move(w.piece), w.record, w.side);
+        stack.push_back({std::move(*r.negative), t.negative(w.m), k, 0});
+        stack.push_back({std::move(*r.positive), t.positive(w.m), k, 1});
+        break;
+      }
+      if (!r.negative && !r.positive) { // nothing left of it
+        parts.broken(w.record, w.side);
+        break;
+      }
+      w.piece = std::move(r.negative ? *r.negative : *r.positive);
+      w.m = t.child(w.m, r.negative ? -1 : +1);
     }
-  };
-  descend(std::move(s), t.root());
-  while (!stack.empty()) {
-    auto [piece, m] = std::move(stack.back());
-    stack.pop_back();
-    descend(std::move(piece), m);
   }
+  if (rejoin) join_runs<G>(out, first);
 }
 
 } // namespace detail
@@ -155,25 +214,37 @@ void labels_across(tree<G, N, L> const& t, typename G::sub_hyperplane s,
 /// Each input piece is pushed down both trees, so the cost grows with the
 /// number of input pieces times the cells they cross, and not with the size
 /// of the merged tree, which can be much larger.
+///
+/// With `rejoin`, the parts of an input piece that a tree's hyperplanes cut
+/// where no label changes are put back together: the output pieces end only
+/// at the input pieces' ends and where a label changes, so there are fewer
+/// of them and fewer ends to construct.  Where the result's boundary touches
+/// itself inside a piece (a hole's corner on its outer ring's edge), that
+/// piece may then pass through the point where the others end: a caller
+/// that joins pieces by their ends must accept such a T-junction.  Without
+/// it, every cut stays.
 template <geometry G, class Op>
 std::vector<typename G::sub_hyperplane> merged_boundary(point_set<G, bool> const& a,
                                                         std::vector<typename G::sub_hyperplane> const& a_boundary,
                                                         point_set<G, bool> const& b,
-                                                        std::vector<typename G::sub_hyperplane> const& b_boundary, Op op) {
+                                                        std::vector<typename G::sub_hyperplane> const& b_boundary, Op op,
+                                                        bool rejoin = false) {
   using S = typename G::sub_hyperplane;
   std::vector<S> out;
-  std::vector<std::tuple<S, bool, bool>> first, second;
+  std::vector<std::pair<S, std::pair<bool, bool>>> first, second;
   for (int from = 0; from < 2; ++from) {
     auto const& own = from == 0 ? a : b;
     auto const& other = from == 0 ? b : a;
     for (auto const& s : from == 0 ? a_boundary : b_boundary) {
       first.clear();
-      detail::labels_across(own, s, first);
-      for (auto& [p, own_neg, own_pos] : first) {
+      detail::labels_across(own, s, first, rejoin);
+      for (auto& [p, own] : first) {
+        auto [own_neg, own_pos] = own;
         if (own_neg == own_pos) continue; // not on this operand's boundary
         second.clear();
-        detail::labels_across(other, std::move(p), second);
-        for (auto& [q, other_neg, other_pos] : second) {
+        detail::labels_across(other, std::move(p), second, rejoin);
+        for (auto& [q, other] : second) {
+          auto [other_neg, other_pos] = other;
           if (from == 1 && other_neg != other_pos) continue; // on both boundaries: taken from a
           bool neg = from == 0 ? op(own_neg, other_neg) : op(other_neg, own_neg);
           bool pos = from == 0 ? op(own_pos, other_pos) : op(other_pos, own_pos);

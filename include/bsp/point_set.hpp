@@ -10,6 +10,8 @@
 #include "splitter.hpp"
 #include "tree.hpp"
 
+#include <array>
+#include <cstddef>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -286,6 +288,74 @@ template <geometry G, label L> struct boundary_piece {
 
 namespace detail {
 
+/// Collects the parts of one piece pushed down a tree, each with the result
+/// `R` its leaf gave, and puts split pieces back together: where both parts
+/// of a split come out whole with equal results, the piece before the split
+/// comes out instead (with that result).  So a piece cut only by hyperplanes
+/// across which its result does not change comes out whole, and the parts
+/// that do come out end where the result changes or where a neighbouring
+/// part was cut.  Nothing is constructed: the kept pieces are the ones the
+/// splits started from.
+///
+/// Each split is a record waiting for its two parts; a part reports to the
+/// record of the split that made it (`none` for the piece pushed down).
+/// Switched off (`enabled` false), it keeps no record and every part goes
+/// out as it comes.
+template <class S, class R> class rejoiner {
+public:
+  static constexpr std::size_t none = static_cast<std::size_t>(-1);
+
+  rejoiner(std::vector<std::pair<S, R>>& out, bool enabled) : out_(out), enabled_(enabled) {}
+
+  /// Records the split of `piece` (a part of `parent`'s side `side`); its
+  /// parts report to the returned record, the negative one as side 0.
+  std::size_t split(S piece, std::size_t parent, int side) {
+    if (!enabled_) return none;
+    records_.push_back({std::move(piece), parent, side, {}, 0, false});
+    return records_.size() - 1;
+  }
+  /// A part that came out whole with `result`.
+  void whole(std::size_t record, int side, S piece, R result) {
+    report(record, side, std::optional<std::pair<S, R>>(std::in_place, std::move(piece), std::move(result)));
+  }
+  /// A part that came out in several pieces (already given to `emit`).
+  void broken(std::size_t record, int side) { report(record, side, std::nullopt); }
+  /// A piece for the output that is no split's part.
+  void emit(S piece, R result) { out_.emplace_back(std::move(piece), std::move(result)); }
+
+private:
+  struct record {
+    S piece;
+    std::size_t parent;
+    int side;
+    std::array<std::optional<std::pair<S, R>>, 2> part;
+    int arrived;
+    bool broken;
+  };
+
+  void report(std::size_t at, int side, std::optional<std::pair<S, R>> part) {
+    while (at != none) {
+      auto& r = records_[at];
+      if (part) r.part[side] = std::move(part);
+      else r.broken = true;
+      if (++r.arrived < 2) return;
+      if (!r.broken && r.part[0]->second == r.part[1]->second) {
+        part.emplace(std::move(r.piece), std::move(r.part[0]->second));
+      } else {
+        for (auto& p : r.part)
+          if (p) out_.push_back(std::move(*p));
+        part.reset();
+      }
+      at = r.parent, side = r.side;
+    }
+    if (part) out_.push_back(std::move(*part));
+  }
+
+  std::vector<std::pair<S, R>>& out_;
+  bool enabled_;
+  std::vector<record> records_;
+};
+
 /// The pieces of `s` (lying in a hyperplane h) as seen from the side `probe`
 /// (−1, +1) of h, pushed down the subtree at `n`, with the labels they meet.
 template <geometry G, class N, label L>
@@ -320,6 +390,57 @@ void push_down(tree<G, N, L> const& t, typename G::sub_hyperplane s, node_id n, 
     auto [piece, m] = std::move(stack.back());
     stack.pop_back();
     descend(std::move(piece), m);
+  }
+}
+
+/// `push_down`, with split parts that meet equal labels put back together
+/// when `rejoin` is set (`rejoiner`): a piece whose label does not change
+/// then comes out whole, as one part.
+template <geometry G, class N, label L>
+void push_down_rejoined(tree<G, N, L> const& t, typename G::sub_hyperplane s, node_id n, int probe,
+                        std::vector<std::pair<typename G::sub_hyperplane, L>>& out, bool rejoin) {
+  using S = typename G::sub_hyperplane;
+  using J = rejoiner<S, L>;
+  struct work {
+    S piece;
+    node_id m;
+    std::size_t record;
+    int side;
+  };
+  J parts(out, rejoin);
+  std::vector<work> stack;
+  stack.push_back({std::move(s), n, J::none, 0});
+  while (!stack.empty()) {
+    auto w = std::move(stack.back());
+    stack.pop_back();
+    for (;;) {
+      if (t.is_leaf(w.m)) {
+        parts.whole(w.record, w.side, std::move(w.piece), t.leaf_data(w.m));
+        break;
+      }
+      if (int side = detail::whole_side<G>(w.piece, t.splitter(w.m))) {
+        w.m = t.child(w.m, side);
+        continue;
+      }
+      auto r = G::split(w.piece, t.splitter(w.m));
+      if (r.is_coincident()) {
+        w.m = t.child(w.m, probe * static_cast<int>(r.coincident));
+        continue;
+      }
+      if (r.negative && r.positive) {
+        auto k = parts.split(std::move(w.piece), w.record, w.side);
+        stack.push_back({std::move(*r.negative), t.negative(w.m), k, 0});
+        stack.push_back({std::move(*r.positive), t.positive(w.m), k, 1});
+        break;
+      }
+      if (!r.negative && !r.positive) { // nothing left of it
+        parts.broken(w.record, w.side);
+        break;
+      }
+      // One side only (the piece touches the hyperplane): no split.
+      w.piece = std::move(r.negative ? *r.negative : *r.positive);
+      w.m = t.child(w.m, r.negative ? -1 : +1);
+    }
   }
 }
 

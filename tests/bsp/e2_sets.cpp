@@ -5,8 +5,10 @@
 #include "../support.hpp"
 #include "laws.hpp"
 
+#include <bsp/boolean.hpp>
 #include <geometry/e2.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace geometry;
@@ -186,6 +188,61 @@ TEST_CASE("E2 point sets: the laws on random star polygons, with and without hol
                        sample_points(150, a, b), compared);
   }
   CHECK(compared > 20000);
+}
+
+TEST_CASE("E2 merged boundaries: rejoined pieces end only at vertices and crossings, and bound the same set", "[bsp][e2]") {
+  // On the closed segment from a to b.
+  auto on_segment = [](P const& p, P const& a, P const& b) {
+    if (e2::orientation(a, b, p) != sign::zero) return false;
+    return (p.x() - a.x()) * (p.x() - b.x()) <= 0 && (p.y() - a.y()) * (p.y() - b.y()) <= 0;
+  };
+  auto on_boundary = [&](polygon const& poly, P const& p) {
+    for (auto const& r : poly)
+      for (std::size_t i = 0; i < r.size(); ++i)
+        if (on_segment(p, r[i], r[(i + 1) % r.size()])) return true;
+    return false;
+  };
+  auto is_vertex = [](polygon const& poly, P const& p) {
+    for (auto const& r : poly)
+      if (std::find(r.begin(), r.end(), p) != r.end()) return true;
+    return false;
+  };
+  ring hole{P(0, 2), P(2, 3), P(2, 1)}; // its left vertex on the outer ring
+  std::vector<std::pair<polygon, polygon>> pairs{
+      {{rect(0, 0, 2, 2)}, {rect(1, 1, 3, 3)}},
+      {{rect(0, 0, 4, 4), hole}, {rect(1, 1, 3, 3)}},
+      {{rect(0, 0, 2, 1)}, {rect(1, 0, 3, 1)}},
+      {{rect(0, 0, 1, 1)}, {rect(1, 1, 2, 2)}},
+  };
+  for (int t = 0; t < 30; ++t) pairs.push_back({{random_star(t % 2 == 1)}, {random_star(t % 2 == 1)}});
+  auto union_ = [](bool x, bool y) { return x || y; };
+  auto minus = [](bool x, bool y) { return x && !y; };
+  std::size_t fewer = 0;
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    auto const& [a, b] = pairs[i];
+    INFO("pair " << i);
+    auto ba = boundary_of(a), bb = boundary_of(b);
+    auto A = bsp::build_point_set<K>(ba, true, false, bsp::random_order(i)), B = bsp::build_point_set<K>(bb, true, false, bsp::random_order(i + 99));
+    for (int op = 0; op < 2; ++op) {
+      auto cut = op == 0 ? bsp::merged_boundary(A, ba, B, bb, union_) : bsp::merged_boundary(A, ba, B, bb, minus);
+      auto joined = op == 0 ? bsp::merged_boundary(A, ba, B, bb, union_, true) : bsp::merged_boundary(A, ba, B, bb, minus, true);
+      CHECK(joined.size() <= cut.size());
+      fewer += joined.size() < cut.size();
+      // Both bound the result: the trees built from them have its area.
+      auto exact = op == 0 ? bsp::set_union(A, B) : bsp::set_difference(A, B);
+      CHECK(laws::size<K>(bsp::build_point_set<K>(joined)) == laws::size<K>(exact));
+      CHECK(laws::size<K>(bsp::build_point_set<K>(cut)) == laws::size<K>(exact));
+      for (auto const& piece : joined) {
+        auto ends = e2::endpoints(piece);
+        REQUIRE(ends);
+        for (auto const& p : {ends->first, ends->second})
+          CHECK((is_vertex(a, p) || is_vertex(b, p) || (on_boundary(a, p) && on_boundary(b, p))));
+      }
+    }
+    if (i == 0) // two overlapping squares: 4 sides whole, 4 cut at the 2 crossings, for the union
+      CHECK(bsp::merged_boundary(A, ba, B, bb, union_, true).size() == 8);
+  }
+  CHECK(fewer > 10); // the trees' cuts, put back together
 }
 
 // Plain double: integer vertices in general position.  (With decimal vertices,

@@ -7,6 +7,9 @@
 
 #include "split.hpp"
 
+#include <optional>
+#include <type_traits>
+
 namespace geometry::detail {
 
 /// Calls of a geometry's free functions, found by argument-dependent lookup
@@ -21,7 +24,8 @@ template <class T, class H> split_result<T> split_of(T const& t, H const& h) { r
 /// The `bsp::geometry` operations of a geometry with these objects, each the
 /// free function of the same name in the objects' namespace.  With
 /// sub-hyperplanes that are `restricted_piece`s it is also a
-/// `bsp::whole_side_geometry`.
+/// `bsp::whole_side_geometry`, and with one-dimensional ones (segments,
+/// arcs) a `bsp::joining_geometry`.
 template <number FT, class Point, class Hyperplane, class SubHyperplane, class Polytope> struct kernel_base {
   using number_type = FT;
   using point = Point;
@@ -40,6 +44,20 @@ template <number FT, class Point, class Hyperplane, class SubHyperplane, class P
     requires restricted_piece<sub_hyperplane>
   {
     return geometry::whole_side(s.support.n, s.axis, s.bounds, h.n);
+  }
+  /// `a` and `b` as one piece when `b` continues `a`: one-dimensional
+  /// pieces (segments, arcs) on one support with one orientation, `a`'s end
+  /// bound and `b`'s start bound one hyperplane (by shared numbers, without
+  /// arithmetic), so `a` ends where `b` starts.  Empty otherwise (which says
+  /// nothing).
+  static std::optional<sub_hyperplane> join(sub_hyperplane const& a, sub_hyperplane const& b)
+    requires restricted_piece<sub_hyperplane> && (std::remove_cvref_t<decltype(a.bounds.front().line())>::size == 2)
+  {
+    if (a.bounds.size() != 2 || b.bounds.size() != 2 || a.axis != b.axis) return std::nullopt;
+    if (!shares_numbers(a.support.n, b.support.n) || a.support.n.sign_at(a.axis) != b.support.n.sign_at(b.axis))
+      return std::nullopt;
+    if (!shares_numbers(a.bounds.back().original.n, b.bounds.front().original.n)) return std::nullopt;
+    return sub_hyperplane{a.support, a.axis, {a.bounds.front(), b.bounds.back()}};
   }
 };
 
