@@ -26,6 +26,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <unordered_map>
 #include <numbers>
@@ -89,26 +90,60 @@ inline bool same_direction(direction const& a, direction const& b) {
   return geometry::parallel(a, b) == geometry::sign::positive;
 }
 
-/// An arc's bounding circle through a vertex of its loop, and that vertex.
-using arc_end = std::pair<sphere_kernel::hyperplane, direction>;
+/// An input vertex where an arc ends: the arc's circle (`support`), its
+/// bounding circle there (`bound`) and the vertex.  An arc cut out of that
+/// arc keeps both circles where it keeps that end.
+struct arc_end {
+  sphere_kernel::hyperplane support, bound;
+  direction vertex;
+};
 
 /// The arcs of a loop with its region on their negative side (the tree
-/// builder's convention), and in `ends` (when given) each arc's bounding
-/// circles with the vertices they pass through.  Repeated directions are
-/// dropped; an edge between antipodal directions has no minor arc and is
-/// refused.
+/// builder's convention), and in `ends` (when given) each arc's circles at
+/// its ends with the vertices there.  Each arc is bounded at a vertex by
+/// the circle of the loop's arc on the other side of that vertex (turned
+/// so that the arc is on its positive side), so that an arc cut out of a
+/// neighbour's piece and ending at that vertex is known to lie on the
+/// circle without arithmetic (`geometry::shares_numbers`), or, where the
+/// two arcs run along one circle, by the circle through the vertex
+/// perpendicular to the arc, as `geometry::s2::arc` bounds it.  Repeated
+/// directions are dropped; an edge between antipodal directions has no
+/// minor arc and is refused.
 inline void add_arcs(loop l, std::vector<sphere_kernel::sub_hyperplane>& out, std::vector<arc_end>* ends = nullptr) {
+  using circle = sphere_kernel::hyperplane;
   loop v;
   for (auto& d : l)
     if (v.empty() || !same_direction(v.back(), d)) v.push_back(std::move(d));
   while (v.size() >= 2 && same_direction(v.back(), v.front())) v.pop_back();
   if (v.size() < 3) return;
-  for (std::size_t i = 0, n = v.size(); i < n; ++i) {
+  std::size_t n = v.size();
+  // Arc i runs from v[i+1] to v[i] (the region on its negative side) on circle i.
+  std::vector<circle> c;
+  c.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
     auto const &a = v[i], &b = v[(i + 1) % n];
     if (geometry::parallel(a, b) != geometry::sign::zero)
       throw invalid_polygon("an edge joins two antipodal points: no minor arc is defined between them");
-    out.push_back(geometry::s2::arc(b, a));
-    if (ends) ends->push_back({out.back().bounds.front().original, b}), ends->push_back({out.back().bounds.back().original, a});
+    c.push_back(geometry::s2::circle_through(b, a));
+  }
+  // The neighbour's circle through x, turned to have y (the arc's other end)
+  // on its positive side; the perpendicular circle where y is on it.
+  auto bound_at = [](circle const& on, circle const& neighbour, direction const& x, direction const& y, int sign) {
+    switch (geometry::dot_sign(neighbour.n, y)) {
+    case geometry::sign::positive: return neighbour;
+    case geometry::sign::negative: return neighbour.opposite();
+    default: return circle(sign > 0 ? geometry::cross(on.n, x) : geometry::cross(x, on.n));
+    }
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    auto const &from = v[(i + 1) % n], &to = v[i];
+    auto start = bound_at(c[i], c[(i + 1) % n], from, to, +1), end = bound_at(c[i], c[(i + n - 1) % n], to, from, -1);
+    out.push_back(geometry::s2::arc_bounded_by(c[i], from, to, std::move(start), std::move(end)));
+    if (ends) {
+      auto const& a = out.back();
+      ends->push_back({a.support, a.bounds.front().original, from});
+      ends->push_back({a.support, a.bounds.back().original, to});
+    }
   }
 }
 
@@ -234,6 +269,16 @@ inline spherical_operand spherical_operand_of(multipolygon const& lonlat) {
 
 namespace detail {
 
+/// Input vertices by the identities (`hvec::identity`) of an arc's circle
+/// and its bounding circle there.
+struct identity_pair_hash {
+  std::size_t operator()(std::pair<void const*, void const*> const& k) const noexcept {
+    auto a = reinterpret_cast<std::uintptr_t>(k.first), b = reinterpret_cast<std::uintptr_t>(k.second);
+    return std::hash<std::uintptr_t>{}(a * 0x9e3779b97f4a7c15ull ^ (b + (a << 6) + (a >> 2)));
+  }
+};
+using known_vertices = std::unordered_map<std::pair<void const*, void const*>, direction const*, identity_pair_hash>;
+
 /// An arc of an output loop, with the normal of its circle (the region on
 /// its positive side).
 struct arc_edge {
@@ -250,14 +295,16 @@ struct arc_edge {
 /// the boundary touches itself a loop turns as far left as it can and is
 /// cut there.
 inline std::vector<loop> loops_of(std::vector<sphere_kernel::sub_hyperplane> const& pieces,
-                                  std::unordered_map<void const*, direction const*> const& known = {}) {
+                                  known_vertices const& known = {}) {
   std::vector<arc_edge> edges;
-  // An arc's start or end: a known vertex when its bounding circle is an
-  // input arc's (the circle's numbers, shared by every copy, identify it).
+  // An arc's start or end: a known vertex when its circle and its bounding
+  // circle there are an input arc's (their numbers, shared by every copy and
+  // by the opposite circles, identify them).
   auto end_of = [&](sphere_kernel::sub_hyperplane const& piece, bool end) {
     if (!known.empty()) {
       auto const& b = end ? piece.bounds.back() : piece.bounds.front();
-      if (auto it = known.find(&b.original.n.integer_view()); it != known.end()) return *it->second;
+      if (auto it = known.find({piece.support.n.identity(), b.original.n.identity()}); it != known.end())
+        return *it->second;
     }
     return geometry::s2::endpoint(piece, end);
   };
@@ -483,15 +530,13 @@ inline std::vector<spherical_polygon> spherical_polygons(region_s2 const& r) {
 /// reads it).  The same polygons as that.  Throws `std::invalid_argument`
 /// when the result is the whole sphere.
 inline std::vector<spherical_polygon> combine(set_op op, spherical_operand const& a, spherical_operand const& b) {
-  // The input vertices by the arcs' bounding circles through them, either way round.
-  std::unordered_map<void const*, direction const*> known;
+  // The input vertices by the arcs' circles and bounding circles through them.
+  detail::known_vertices known;
+  known.reserve(a.ends.size() + b.ends.size());
   for (auto const* o : {&a, &b})
-    for (auto const& [circle, v] : o->ends) {
-      known.emplace(&circle.n.integer_view(), &v);
-      known.emplace(&(-circle.n).integer_view(), &v);
-    }
+    for (auto const& e : o->ends) known.emplace(std::pair{e.support.n.identity(), e.bound.n.identity()}, &e.vertex);
   auto all = detail::loops_of(bsp::merged_boundary(a.tree, a.boundary, b.tree, b.boundary,
-                                                   [op](bool x, bool y) { return detail::label_op(op, x, y); }),
+                                                   [op](bool x, bool y) { return detail::label_op(op, x, y); }, true),
                               known);
   if (all.size() == 1) return {{std::move(all.front()), {}}}; // the result is the left of its one loop
   if (!all.empty())

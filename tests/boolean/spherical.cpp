@@ -259,6 +259,16 @@ TEST_CASE("S2 Boolean operations: combine without the merged tree gives the merg
     check_combine({reversed}, {far});
     check_combine({octant}, {north});    // vertices and arcs on the axes and the equator
     check_combine({north}, {square});    // a half circle through the square
+    // Boundaries touching inside an arc: a corner on the other's arc, a
+    // hole's corner on its outer loop's arc (the arc is not cut there).
+    // Directions (10, y, z): arcs are segments in the (y, z) plane, seen from outside as drawn.
+    loop outer{d(10, -2, -2), d(10, 2, -2), d(10, 2, 2), d(10, -2, 2)};
+    loop touching_hole{d(10, -2, 0), d(10, 0, 1), d(10, 0, -1)};
+    loop on_edge{d(10, -2, 0), d(10, -4, 1), d(10, -4, -1)};
+    check_combine({outer, touching_hole}, {inner});
+    check_combine({outer, touching_hole}, {shifted});
+    check_combine({outer}, {on_edge});
+    check_combine({outer, touching_hole}, {on_edge});
   }
   SECTION("an operand's arcs end at its loops' vertices, which combine takes instead of constructing them") {
     auto A = boolean::spherical_operand_of({square, cap, hole});
@@ -266,12 +276,36 @@ TEST_CASE("S2 Boolean operations: combine without the merged tree gives the merg
     REQUIRE(A.ends.size() == 2 * A.boundary.size());
     for (std::size_t i = 0; i < A.boundary.size(); ++i) {
       auto const& arc = A.boundary[i];
-      CHECK(A.ends[2 * i].first == arc.bounds.front().original);
-      CHECK(A.ends[2 * i + 1].first == arc.bounds.back().original);
-      CHECK(A.ends[2 * i].second == geometry::s2::endpoint(arc, false));
-      CHECK(A.ends[2 * i + 1].second == geometry::s2::endpoint(arc, true));
-      CHECK(geometry::dot_sign(A.ends[2 * i].first.n, A.ends[2 * i].second) == geometry::sign::zero);
+      for (bool end : {false, true}) {
+        auto const& e = A.ends[2 * i + (end ? 1 : 0)];
+        auto const& b = end ? arc.bounds.back() : arc.bounds.front();
+        CHECK(e.support == arc.support);
+        CHECK(e.bound == b.original);
+        CHECK(e.vertex == geometry::s2::endpoint(arc, end));
+        CHECK(geometry::dot_sign(e.bound.n, e.vertex) == geometry::sign::zero);
+        CHECK(geometry::dot_sign(e.support.n, e.vertex) == geometry::sign::zero);
+        // The bound is the neighbouring arc's circle (or the perpendicular
+        // one), turned so the arc lies on its positive side: its other end.
+        CHECK(geometry::dot_sign(e.bound.n, geometry::s2::endpoint(arc, !end)) == geometry::sign::positive);
+        // The restricted bound is the restriction of its original.
+        CHECK(geometry::parallel(b.line(), geometry::restrict_to(arc.support.n, arc.axis, b.original.n)) ==
+              geometry::sign::positive);
+      }
     }
+    // Arc i of a loop runs from vertex i + 1 to vertex i: it is bounded by
+    // the circles of arcs i + 1 and i − 1, the same numbers.
+    std::size_t first = 0;
+    for (std::size_t k : {4, 8, 8}) {
+      for (std::size_t i = 0; i < k; ++i) {
+        auto const& arc = A.boundary[first + i];
+        CHECK(geometry::shares_numbers(arc.bounds.front().original.n, A.boundary[first + (i + 1) % k].support.n));
+        CHECK(geometry::shares_numbers(arc.bounds.back().original.n, A.boundary[first + (i + k - 1) % k].support.n));
+      }
+      first += k;
+    }
+    // Along one circle (the equator) the bounds are perpendicular to it.
+    for (auto const& arc : boolean::spherical_operand_of({north}).boundary)
+      for (auto const& b : arc.bounds) CHECK(geometry::dot_sign(b.original.n, arc.support.n) == geometry::sign::zero);
     // Without the table (a boundary read off a tree), the same polygons.
     auto B = boolean::spherical_operand_of({shifted});
     boolean::spherical_operand A0{{A.tree, A.boundary}, {}}, B0{{B.tree, B.boundary}, {}};

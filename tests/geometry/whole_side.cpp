@@ -48,6 +48,22 @@ TEST_CASE("whole_side agrees with split in E2, S2 and E3, degenerate cases inclu
       continue;
     agree<s2::exact_kernel>(s2::arc(p, q), s2::circle_through(p, a), decided, straddling);
     if (parallel(q, a) == sign::zero) agree<s2::exact_kernel>(s2::arc(p, q), s2::circle_through(q, a), decided, straddling);
+    // Bounded by the circles through its ends and a (the neighbours of a
+    // loop), and tested against those same circles (shared numbers), their
+    // opposites, the arc's own circle, and copies made apart.
+    if (parallel(q, a) != sign::zero || s2::orientation(p, q, a) == sign::zero) continue;
+    auto c = s2::circle_through(p, q), at_p = s2::circle_through(a, p), at_q = s2::circle_through(q, a);
+    if (dot_sign(at_p.n, q) == sign::negative) at_p = at_p.opposite();
+    if (dot_sign(at_q.n, p) == sign::negative) at_q = at_q.opposite();
+    auto arc = s2::arc_bounded_by(c, p, q, at_p, at_q);
+    for (auto const& h : {at_p, at_q, at_p.opposite(), at_q.opposite(), s2::circle_through(a, p), s2::circle_through(q, a)})
+      agree<s2::exact_kernel>(arc, h, decided, straddling);
+    CHECK(s2::exact_kernel::whole_side(arc, c) == oriented_side::on);
+    CHECK(s2::exact_kernel::split(arc, c).is_coincident());
+    for (auto const& h : {s2::circle_through(p, q), s2::circle_through(q, p)}) CHECK(s2::exact_kernel::split(arc, h).is_coincident());
+    // The same ends as `arc(p, q)`.
+    CHECK(s2::endpoint(arc, false) == s2::endpoint(s2::arc(p, q), false));
+    CHECK(s2::endpoint(arc, true) == s2::endpoint(s2::arc(p, q), true));
   }
   for (int t = 0; t < 1000; ++t) {
     std::vector<e3::point<Q>> tri{{small(), small(), small()}, {small(), small(), small()}, {small(), small(), small()}};

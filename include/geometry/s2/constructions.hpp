@@ -108,6 +108,20 @@ template <number FT> sub_hyperplane<FT> arc(point<FT> const& a, point<FT> const&
 }
 
 
+/// The minor arc from `a` to `b` on their circle `c` (`circle_through(a,
+/// b)`), bounded at `a` by the circle `at_a` and at `b` by `at_b`: circles
+/// through those points other than `c`, each with the arc on its positive
+/// side (the circles of a loop's neighbouring arcs, say).  The bounds are
+/// restricted to `c` from the points (`restricted_through`), so they are
+/// those of `arc(a, b)`; the circles are kept as the bounds' originals.
+template <number FT>
+sub_hyperplane<FT> arc_bounded_by(hyperplane<FT> c, point<FT> const& a, point<FT> const& b, hyperplane<FT> at_a,
+                                  hyperplane<FT> at_b) {
+  std::size_t k = dominant_axis(c.n);
+  auto ra = restricted_through(c.n, k, a, +1), rb = restricted_through(c.n, k, b, -1);
+  return {std::move(c), k, {{std::move(at_a), std::move(ra)}, {std::move(at_b), std::move(rb)}}};
+}
+
 /// The start (`end` false) or the end of an arc that has a bound: where
 /// its first or last bound meets its circle (exact, unnormalised).
 template <number FT> point<FT> endpoint(sub_hyperplane<FT> const& s, bool end) {
