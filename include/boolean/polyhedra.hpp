@@ -797,7 +797,7 @@ inline solid apply(csg_op op, solid const& a, solid const& b) {
   auto v = bsp::measure(out.tree, true);
   if (!v) throw std::invalid_argument("boolean::apply: the result is unbounded");
   out.volume = std::move(*v);
-  out.boundary = bsp::merged_boundary(a.tree, a.boundary, b.tree, b.boundary, detail::polyhedra::label_op(op));
+  out.boundary = bsp::merged_boundary(a.tree, a.boundary, b.tree, b.boundary, detail::polyhedra::label_op(op), true);
   return out;
 }
 
@@ -913,7 +913,7 @@ inline mesh to_mesh(solid const& s) { return to_mesh(s.tree); }
 /// same mesh as `to_mesh(apply(op, a, b))`, faster; its exact volume is
 /// `volume(mesh)`.
 inline mesh combine(csg_op op, solid const& a, solid const& b) {
-  return to_mesh(bsp::merged_boundary(a.tree, a.boundary, b.tree, b.boundary, detail::polyhedra::label_op(op)));
+  return to_mesh(bsp::merged_boundary(a.tree, a.boundary, b.tree, b.boundary, detail::polyhedra::label_op(op), true));
 }
 
 /// How the faces of `m` use its edges (see `edge_report`).
