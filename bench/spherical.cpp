@@ -56,10 +56,11 @@ struct options {
   std::uint64_t seed = 20261207;
   std::optional<std::string> json;
   bench::repetition repeat; ///< runs per case; the median is reported
+  int rounds = 1;           ///< times each case's two libraries run, in turn
 };
 
 void print_help() {
-  std::puts("Usage: bench_spherical [--sizes N,...] [--families star,wavy] [--limit S] [--seed N] [--json FILE] [--quick]\n"
+  std::puts("Usage: bench_spherical [--sizes N,...] [--families star,wavy] [--limit S] [--seed N] [--rounds K] [--json FILE] [--quick]\n"
             "\n"
             "Times genbsp's exact Boolean operations on the sphere (both regions built\n"
             "from their loops, their arcs classified against both, read back as polygons) against Google S2's\n"
@@ -74,6 +75,9 @@ void print_help() {
             "  --limit S        stop a run after S seconds (default 45); larger sizes of that\n"
             "                   library, family and operation are then skipped\n"
             "  --seed N         seed of the loops (default 20261207)\n"
+            "  --rounds K       run each case's two libraries K times, in turn (genbsp, S2,\n"
+            "                   genbsp, ...), and report the median of all their runs, so\n"
+            "                   that both meet the machine's slow and fast spells (default 1)\n"
             "  --json FILE      write the results as JSON\n"
             "  --quick          sizes 100 and 1000, limit 10 s\n"
             "  --help           this text");
@@ -91,7 +95,7 @@ std::optional<int> parse(int argc, char** argv, options& o) {
       quick = true;
       continue;
     }
-    if (a != "--sizes" && a != "--families" && a != "--limit" && a != "--seed" && a != "--json") {
+    if (a != "--sizes" && a != "--families" && a != "--limit" && a != "--seed" && a != "--rounds" && a != "--json") {
       std::fprintf(stderr, "bench_spherical: unknown argument '%s' (try --help)\n", argv[i]);
       return 2;
     }
@@ -131,6 +135,11 @@ std::optional<int> parse(int argc, char** argv, options& o) {
       if (v.empty() || *end != '\0' || !(s > 0)) return bad("a positive number of seconds");
       o.limit = s;
       limit_given = true;
+    } else if (a == "--rounds") {
+      char* end = nullptr;
+      long k = std::strtol(v.c_str(), &end, 10);
+      if (v.empty() || *end != '\0' || k < 1 || k > 100) return bad("an integer from 1 to 100");
+      o.rounds = static_cast<int>(k);
     } else if (a == "--seed") {
       char* end = nullptr;
       unsigned long long n = std::strtoull(v.c_str(), &end, 10);
@@ -327,7 +336,7 @@ bool write_json(options const& o, std::vector<row> const& rows, bool finished) {
   j << "{\n  \"benchmark\": \"bench_spherical\",\n  \"machine\": {\"hardware_threads\": "
     << std::thread::hardware_concurrency() << ", \"compiler\": " << bench::json_string(bench::compiler())
     << ", \"optimised\": " << (bench::optimised() ? "true" : "false") << "},\n  \"settings\": {\"seed\": " << o.seed
-    << ", \"limit_seconds\": " << number(o.limit) << ", \"finished\": " << (finished ? "true" : "false")
+    << ", \"limit_seconds\": " << number(o.limit) << ", \"rounds\": " << o.rounds << ", \"finished\": " << (finished ? "true" : "false")
     << "},\n  \"results\": [\n";
   for (std::size_t i = 0; i < rows.size(); ++i) {
     auto const& r = rows[i];
@@ -363,10 +372,10 @@ std::string sizes(measurement const& m) {
 int main(int argc, char** argv) {
   options o;
   if (auto code = parse(argc, argv, o)) return *code;
-  std::printf("bench_spherical: %u hardware threads, %s%s; limit %g s per run; seed %llu\n\n",
+  std::printf("bench_spherical: %u hardware threads, %s%s; limit %g s per run; seed %llu; %d round%s\n\n",
               std::thread::hardware_concurrency(), bench::compiler().c_str(),
               bench::optimised() ? "" : " (NOT optimised: the numbers mean little)", o.limit,
-              static_cast<unsigned long long>(o.seed));
+              static_cast<unsigned long long>(o.seed), o.rounds, o.rounds == 1 ? "" : "s");
   std::puts("| Loops | Operation | n | genbsp s | S2 s | genbsp / S2 | genbsp P / L / V | S2 P / L / V | Area diff |");
   std::puts("| ----- | --------- | -: | -------: | ---: | ----------: | ---------------: | -----------: | --------: |");
   std::vector<row> rows;
@@ -383,21 +392,29 @@ int main(int argc, char** argv) {
         bool union_ = k == 0;
         row r{family, union_ ? "union" : "intersection", n, {}, {}};
         std::fprintf(stderr, "%s %s %zu:", family.c_str(), r.op.c_str(), n);
-        for (int lib = 0; lib < 2; ++lib) {
-          measurement& m = lib == 0 ? r.genbsp : r.s2;
-          std::fprintf(stderr, "%s", lib == 0 ? " genbsp" : "; S2");
-          if (stopped[lib][k]) {
-            m.status = "skipped";
-            continue;
+        for (int round = 0; round < o.rounds; ++round)
+          for (int lib = 0; lib < 2; ++lib) {
+            measurement& m = lib == 0 ? r.genbsp : r.s2;
+            std::fprintf(stderr, "%s", lib == 0 ? " genbsp" : "; S2");
+            if (stopped[lib][k]) {
+              m.status = "skipped";
+              continue;
+            }
+            if (round > 0 && m.status != "ok") continue;
+            auto got = lib == 0 ? measure(o, [&](int fd) { genbsp_child(fd, union_, a, b, o); })
+                                : measure(o, [&](int fd) { s2_child(fd, union_, a, b, o); });
+            if (round == 0) {
+              m = std::move(got);
+            } else if (got.status == "ok") { // later rounds add their runs
+              m.runs.insert(m.runs.end(), got.runs.begin(), got.runs.end());
+              m.seconds = median(m.runs);
+            }
+            if (m.status == "not finished") stopped[lib][k] = true;
+            if (m.status.starts_with("error") || got.status.starts_with("error")) {
+              errors = true;
+              std::fprintf(stderr, " %s", got.status.c_str());
+            }
           }
-          m = lib == 0 ? measure(o, [&](int fd) { genbsp_child(fd, union_, a, b, o); })
-                       : measure(o, [&](int fd) { s2_child(fd, union_, a, b, o); });
-          if (m.status == "not finished") stopped[lib][k] = true;
-          if (m.status.starts_with("error")) {
-            errors = true;
-            std::fprintf(stderr, " %s", m.status.c_str());
-          }
-        }
         std::fprintf(stderr, "\n");
         auto q = ratio(r);
         std::string diff = "—";
