@@ -135,14 +135,8 @@ void labels_across(tree<G, N, L> const& t, typename G::sub_hyperplane s,
   std::size_t const first = out.size();
   using S = typename G::sub_hyperplane;
   using J = rejoiner<S, std::pair<L, L>>;
-  struct work {
-    S piece;
-    node_id m;
-    std::size_t record;
-    int side;
-  };
   J parts(out, rejoin);
-  std::vector<work> stack; // parts of split pieces, both sides still together
+  std::vector<rejoin_work<S>> stack; // parts of split pieces, both sides still together
   std::vector<std::pair<S, L>> below, across;
   stack.push_back({std::move(s), t.root(), J::none, 0});
   while (!stack.empty()) {
@@ -181,18 +175,7 @@ void labels_across(tree<G, N, L> const& t, typename G::sub_hyperplane s,
         parts.broken(w.record, w.side);
         break;
       }
-      if (r.negative && r.positive) {
-        auto k = parts.split(std::move(w.piece), w.record, w.side);
-        stack.push_back({std::move(*r.negative), t.negative(w.m), k, 0});
-        stack.push_back({std::move(*r.positive), t.positive(w.m), k, 1});
-        break;
-      }
-      if (!r.negative && !r.positive) { // nothing left of it
-        parts.broken(w.record, w.side);
-        break;
-      }
-      w.piece = std::move(r.negative ? *r.negative : *r.positive);
-      w.m = t.child(w.m, r.negative ? -1 : +1);
+      if (!follow_split<G>(t, r, w, stack, parts)) break;
     }
   }
   if (rejoin) join_runs<G>(out, first);

@@ -393,6 +393,38 @@ void push_down(tree<G, N, L> const& t, typename G::sub_hyperplane s, node_id n, 
   }
 }
 
+/// A piece on its way down a tree for a `rejoiner`: at node `m`, a part of
+/// the split `record`'s side `side`.
+template <class S> struct rejoin_work {
+  S piece;
+  node_id m;
+  std::size_t record;
+  int side;
+};
+
+/// Follows `r`, the split of `w.piece` by the hyperplane at `w.m` (not
+/// coincident): two parts go on `stack` as the parts of a new record of
+/// `parts`; a single part (the piece touches the hyperplane) becomes `w`'s
+/// piece in the child on its side, and true is returned, to go on with it;
+/// nothing left is reported to `parts` as a broken part.
+template <class G, class Tree, class R, class J>
+bool follow_split(Tree const& t, R& r, rejoin_work<typename G::sub_hyperplane>& w,
+                  std::vector<rejoin_work<typename G::sub_hyperplane>>& stack, J& parts) {
+  if (r.negative && r.positive) {
+    auto k = parts.split(std::move(w.piece), w.record, w.side);
+    stack.push_back({std::move(*r.negative), t.negative(w.m), k, 0});
+    stack.push_back({std::move(*r.positive), t.positive(w.m), k, 1});
+    return false;
+  }
+  if (!r.negative && !r.positive) { // nothing left of it
+    parts.broken(w.record, w.side);
+    return false;
+  }
+  w.piece = std::move(r.negative ? *r.negative : *r.positive);
+  w.m = t.child(w.m, r.negative ? -1 : +1);
+  return true;
+}
+
 /// `push_down`, with split parts that meet equal labels put back together
 /// when `rejoin` is set (`rejoiner`): a piece whose label does not change
 /// then comes out whole, as one part.
@@ -401,14 +433,8 @@ void push_down_rejoined(tree<G, N, L> const& t, typename G::sub_hyperplane s, no
                         std::vector<std::pair<typename G::sub_hyperplane, L>>& out, bool rejoin) {
   using S = typename G::sub_hyperplane;
   using J = rejoiner<S, L>;
-  struct work {
-    S piece;
-    node_id m;
-    std::size_t record;
-    int side;
-  };
   J parts(out, rejoin);
-  std::vector<work> stack;
+  std::vector<rejoin_work<S>> stack;
   stack.push_back({std::move(s), n, J::none, 0});
   while (!stack.empty()) {
     auto w = std::move(stack.back());
@@ -427,19 +453,7 @@ void push_down_rejoined(tree<G, N, L> const& t, typename G::sub_hyperplane s, no
         w.m = t.child(w.m, probe * static_cast<int>(r.coincident));
         continue;
       }
-      if (r.negative && r.positive) {
-        auto k = parts.split(std::move(w.piece), w.record, w.side);
-        stack.push_back({std::move(*r.negative), t.negative(w.m), k, 0});
-        stack.push_back({std::move(*r.positive), t.positive(w.m), k, 1});
-        break;
-      }
-      if (!r.negative && !r.positive) { // nothing left of it
-        parts.broken(w.record, w.side);
-        break;
-      }
-      // One side only (the piece touches the hyperplane): no split.
-      w.piece = std::move(r.negative ? *r.negative : *r.positive);
-      w.m = t.child(w.m, r.negative ? -1 : +1);
+      if (!follow_split<G>(t, r, w, stack, parts)) break;
     }
   }
 }
