@@ -132,7 +132,7 @@ inline void add_arcs(loop l, std::vector<sphere_kernel::sub_hyperplane>& out, st
     switch (geometry::dot_sign(neighbour.n, y)) {
     case geometry::sign::positive: return neighbour;
     case geometry::sign::negative: return neighbour.opposite();
-    default: return circle(sign > 0 ? geometry::cross(on.n, x) : geometry::cross(x, on.n));
+    default: return geometry::s2::perpendicular_through(on, x, sign);
     }
   };
   for (std::size_t i = 0; i < n; ++i) {

@@ -91,17 +91,6 @@ point_set<G, R> merge(point_set<G, LA> const& a, point_set<G, LB> const& b, Op o
 
 namespace detail {
 
-/// The pieces of `s` with the labels of tree `t` on their negative and
-/// positive sides (where `s` runs along a node's hyperplane both children are
-/// looked at, as in `boundary`).
-///
-/// Both sides of a piece go down together while it stays off the hyperplanes
-/// it meets; where it lies in one (at node m), they part: the piece goes down
-/// the child on its negative side, and each part that comes out goes down the
-/// other child from m.  Without descending twice from the root.  With
-/// `rejoin`, parts of a split whose labels agree are put back together
-/// (`rejoiner`), so a piece comes out cut only where a label on one of its
-/// sides changes, or where a neighbouring part was cut.
 /// Joins the pieces `out[first..]` where one continues another with the same
 /// labels (`G::join`), until none does; skipped past `limit` pieces, where
 /// the pairs to try would cost more than the pieces they save.
@@ -129,6 +118,17 @@ void join_runs(std::vector<std::pair<typename G::sub_hyperplane, R>>& out, std::
   }
 }
 
+/// The pieces of `s` with the labels of tree `t` on their negative and
+/// positive sides (where `s` runs along a node's hyperplane both children are
+/// looked at, as in `boundary`).
+///
+/// Both sides of a piece go down together while it stays off the hyperplanes
+/// it meets; where it lies in one (at node m), they part: the piece goes down
+/// the child on its negative side, and each part that comes out goes down the
+/// other child from m.  Without descending twice from the root.  With
+/// `rejoin`, parts of a split whose labels agree are put back together
+/// (`rejoiner`), so a piece comes out cut only where a label on one of its
+/// sides changes, or where a neighbouring part was cut.
 template <geometry G, class N, label L>
 void labels_across(tree<G, N, L> const& t, typename G::sub_hyperplane s,
                    std::vector<std::pair<typename G::sub_hyperplane, std::pair<L, L>>>& out, bool rejoin) {
@@ -156,10 +156,10 @@ void labels_across(tree<G, N, L> const& t, typename G::sub_hyperplane s,
       if (r.is_coincident()) {
         int c = static_cast<int>(r.coincident); // +1: the piece faces as m's hyperplane does
         below.clear();
-        push_down_rejoined(t, std::move(w.piece), t.child(w.m, -c), -1, below, rejoin);
+        push_down(t, std::move(w.piece), t.child(w.m, -c), -1, below, rejoin);
         if (below.size() == 1) {
           across.clear();
-          push_down_rejoined(t, std::move(below.front().first), t.child(w.m, c), +1, across, rejoin);
+          push_down(t, std::move(below.front().first), t.child(w.m, c), +1, across, rejoin);
           if (across.size() == 1) { // whole, one label on each side
             parts.whole(w.record, w.side, std::move(across.front().first), {below.front().second, across.front().second});
             break;
@@ -168,7 +168,7 @@ void labels_across(tree<G, N, L> const& t, typename G::sub_hyperplane s,
         } else {
           for (auto& [part, lneg] : below) {
             across.clear();
-            push_down_rejoined(t, std::move(part), t.child(w.m, c), +1, across, rejoin);
+            push_down(t, std::move(part), t.child(w.m, c), +1, across, rejoin);
             for (auto& [q, lpos] : across) parts.emit(std::move(q), {lneg, lpos});
           }
         }

@@ -356,43 +356,6 @@ private:
   std::vector<record> records_;
 };
 
-/// The pieces of `s` (lying in a hyperplane h) as seen from the side `probe`
-/// (−1, +1) of h, pushed down the subtree at `n`, with the labels they meet.
-template <geometry G, class N, label L>
-void push_down(tree<G, N, L> const& t, typename G::sub_hyperplane s, node_id n, int probe,
-               std::vector<std::pair<typename G::sub_hyperplane, L>>& out) {
-  // A piece goes down in place while it passes whole; the stack holds the
-  // parts of split pieces.
-  std::vector<std::pair<typename G::sub_hyperplane, node_id>> stack;
-  auto descend = [&](typename G::sub_hyperplane piece, node_id m) {
-    for (;;) {
-      if (t.is_leaf(m)) {
-        out.emplace_back(std::move(piece), t.leaf_data(m));
-        return;
-      }
-      if (int w = detail::whole_side<G>(piece, t.splitter(m))) {
-        m = t.child(m, w);
-        continue;
-      }
-      auto r = G::split(piece, t.splitter(m));
-      if (r.is_coincident()) {
-        // Lying in m's hyperplane: the side probed decides the child.
-        m = t.child(m, probe * static_cast<int>(r.coincident));
-        continue;
-      }
-      if (r.negative) stack.emplace_back(std::move(*r.negative), t.negative(m));
-      if (r.positive) stack.emplace_back(std::move(*r.positive), t.positive(m));
-      return;
-    }
-  };
-  descend(std::move(s), n);
-  while (!stack.empty()) {
-    auto [piece, m] = std::move(stack.back());
-    stack.pop_back();
-    descend(std::move(piece), m);
-  }
-}
-
 /// A piece on its way down a tree for a `rejoiner`: at node `m`, a part of
 /// the split `record`'s side `side`.
 template <class S> struct rejoin_work {
@@ -425,12 +388,14 @@ bool follow_split(Tree const& t, R& r, rejoin_work<typename G::sub_hyperplane>& 
   return true;
 }
 
-/// `push_down`, with split parts that meet equal labels put back together
-/// when `rejoin` is set (`rejoiner`): a piece whose label does not change
-/// then comes out whole, as one part.
+/// The pieces of `s` (lying in a hyperplane h) as seen from the side `probe`
+/// (−1, +1) of h, pushed down the subtree at `n`, with the labels they meet.
+/// With `rejoin`, split parts that meet equal labels are put back together
+/// (`rejoiner`): a piece whose label does not change then comes out whole,
+/// as one part.
 template <geometry G, class N, label L>
-void push_down_rejoined(tree<G, N, L> const& t, typename G::sub_hyperplane s, node_id n, int probe,
-                        std::vector<std::pair<typename G::sub_hyperplane, L>>& out, bool rejoin) {
+void push_down(tree<G, N, L> const& t, typename G::sub_hyperplane s, node_id n, int probe,
+               std::vector<std::pair<typename G::sub_hyperplane, L>>& out, bool rejoin = false) {
   using S = typename G::sub_hyperplane;
   using J = rejoiner<S, L>;
   J parts(out, rejoin);

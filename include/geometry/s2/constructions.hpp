@@ -94,20 +94,6 @@ template <number FT> hvec<FT, 2> restricted_through(hvec<FT, 3> const& p, std::s
       x);
 }
 
-/// The minor arc from `a` to `b` (independent directions), on
-/// `circle_through(a, b)`: bounded by the circles through a and through b
-/// perpendicular to it, each restricted to it from its point
-/// (`restricted_through`), as splitting the whole circle by them
-/// would bound it.
-template <number FT> sub_hyperplane<FT> arc(point<FT> const& a, point<FT> const& b, hyperplane_tag tag = no_tag) {
-  auto c = circle_through(a, b, tag);
-  hyperplane<FT> through_a(cross(c.n, a)), through_b(cross(b, c.n));
-  std::size_t k = dominant_axis(c.n);
-  auto ra = restricted_through(c.n, k, a, +1), rb = restricted_through(c.n, k, b, -1);
-  return {std::move(c), k, {{std::move(through_a), std::move(ra)}, {std::move(through_b), std::move(rb)}}};
-}
-
-
 /// The minor arc from `a` to `b` on their circle `c` (`circle_through(a,
 /// b)`), bounded at `a` by the circle `at_a` and at `b` by `at_b`: circles
 /// through those points other than `c`, each with the arc on its positive
@@ -120,6 +106,23 @@ sub_hyperplane<FT> arc_bounded_by(hyperplane<FT> c, point<FT> const& a, point<FT
   std::size_t k = dominant_axis(c.n);
   auto ra = restricted_through(c.n, k, a, +1), rb = restricted_through(c.n, k, b, -1);
   return {std::move(c), k, {{std::move(at_a), std::move(ra)}, {std::move(at_b), std::move(rb)}}};
+}
+
+/// The circle through the point `x` of the circle `c`, perpendicular to it,
+/// positive on the side `c` runs to from `x` (`sign` +1) or comes from (−1).
+template <number FT> hyperplane<FT> perpendicular_through(hyperplane<FT> const& c, point<FT> const& x, int sign) {
+  return hyperplane<FT>(sign > 0 ? cross(c.n, x) : cross(x, c.n));
+}
+
+/// The minor arc from `a` to `b` (independent directions), on
+/// `circle_through(a, b)`: bounded by the circles through a and through b
+/// perpendicular to it, each restricted to it from its point
+/// (`restricted_through`), as splitting the whole circle by them
+/// would bound it.
+template <number FT> sub_hyperplane<FT> arc(point<FT> const& a, point<FT> const& b, hyperplane_tag tag = no_tag) {
+  auto c = circle_through(a, b, tag);
+  auto at_a = perpendicular_through(c, a, +1), at_b = perpendicular_through(c, b, -1);
+  return arc_bounded_by(std::move(c), a, b, std::move(at_a), std::move(at_b));
 }
 
 /// The start (`end` false) or the end of an arc that has a bound: where
