@@ -21,6 +21,7 @@
 #include <bsp/tree.hpp>
 #include <boost/pending/disjoint_sets.hpp>
 #include <geometry/e3.hpp>
+#include <geometry/hash.hpp>
 
 #include <algorithm>
 #include <array>
@@ -28,9 +29,12 @@
 #include <deque>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <random>
+#include <span>
 #include <stdexcept>
 #include <type_traits>
+#include <unordered_map>
 
 namespace svm {
 
@@ -50,6 +54,12 @@ using circle_normal = std::array<double, 3>;
 struct build_options {
   bool simplify = true;        ///< join adjacent faces with equal labels
   bool cull_backfaces = false; ///< drop polygons whose front faces away from the eye
+  /// Drop the polygons facing away from the eye that are proven hidden: those
+  /// of closed convex solids the eye is outside of (see
+  /// `detail::on_convex_solids_seen_from_outside`).  The map is the same;
+  /// only polygons given one by one (`build` of `polygon`s), over exact
+  /// numbers.
+  bool cull_convex_solids = true;
   std::uint64_t seed = 1;      ///< splitter choice of the depth-order tree
   /// A convex spherical polygon (its circles, the inside on their positive
   /// sides): only directions inside it are mapped; the rest is one face
@@ -81,7 +91,8 @@ struct map_size {
 struct build_statistics {
   std::size_t input_polygons = 0;
   std::size_t discarded_edge_on = 0;  ///< plane through the eye: no area on the sphere
-  std::size_t discarded_backfacing = 0;
+  std::size_t discarded_backfacing = 0; ///< by `cull_backfaces` or `cull_convex_solids`
+  std::size_t convex_solids = 0;        ///< closed convex solids the eye is outside of
   std::size_t discarded_outside_window = 0; ///< wholly outside `build_options::window`
   std::size_t fragments = 0;          ///< of the depth-order tree
   std::size_t hidden_pieces = 0;      ///< fragment pieces that reached a covered leaf (or a clipped one)
@@ -523,10 +534,12 @@ namespace detail {
 /// The build over `count` convex inputs: `shape_of(i)` is input i as an
 /// `e3::sub_hyperplane` (bounded, its bounds tagged), `corners_of(i)` its
 /// homogeneous vertices (for the window's discard), `label_of(i)` what the
-/// map reports where it is visible.
-template <geometry::number FT, class Shape, class Corners, class Label>
+/// map reports where it is visible; `hidden_if_back(i)` tells that input i
+/// is hidden when it faces away from the eye.
+template <geometry::number FT, class Shape, class Corners, class Label, class HiddenIfBack>
 visibility_map<FT> build_map(std::size_t count, Shape&& shape_of, Corners&& corners_of, Label&& label_of,
-                             geometry::e3::point<FT> const& eye, build_options const& options) {
+                             HiddenIfBack&& hidden_if_back, geometry::e3::point<FT> const& eye,
+                             build_options const& options) {
   using namespace geometry;
   using K3 = e3::kernel<FT>;
   auto t0 = std::chrono::steady_clock::now();
@@ -576,7 +589,7 @@ visibility_map<FT> build_map(std::size_t count, Shape&& shape_of, Corners&& corn
       ++st.discarded_edge_on;
       continue;
     }
-    if (options.cull_backfaces && side == oriented_side::negative) {
+    if (side == oriented_side::negative && (options.cull_backfaces || hidden_if_back(i))) {
       ++st.discarded_backfacing;
       continue;
     }
@@ -738,6 +751,133 @@ visibility_map<FT> build_map(std::size_t count, Shape&& shape_of, Corners&& corn
   return vm;
 }
 
+/// The side tests a build spends proving solids convex: at least a million,
+/// and 64 a polygon in larger scenes.
+inline std::size_t convex_solid_budget(std::size_t polygons) { return std::max<std::size_t>(1u << 20, 64 * polygons); }
+
+/// For each polygon, whether it is a face of a closed convex solid that
+/// `eye` lies outside of: facing away from the eye, such a polygon is hidden
+/// by the solid's own faces.  Exact; polygons found in no such solid are
+/// `false`.
+///
+/// A solid is a set of polygons joined by shared sides, closed: every side
+/// a → b (vertices welded by exact coordinates) is one polygon's, and b → a
+/// exactly one other's, so the faces turn one way around it.  It is convex,
+/// its faces facing out, when every vertex of it lies on or behind every face's
+/// plane, one strictly.  Then each face lies in a supporting plane of the
+/// convex hull P of the vertices, facing out, and a closed surface of such
+/// faces covers the boundary of P.  An eye in front of some face's plane is
+/// outside P; a ray from it to a point of a face it sees the back of enters
+/// P before (near a point inside a face, P is the half-space behind it), where
+/// a front face covers the boundary.  Sides with a vertex in their middle
+/// (T-junctions) or met by more than two polygons leave their polygons
+/// unproven.  The test costs faces × vertices side tests a solid; solids
+/// past `budget` side tests in all are left unproven too.
+template <geometry::number FT>
+std::vector<char> on_convex_solids_seen_from_outside(std::vector<polygon<FT>> const& polygons,
+                                                     geometry::e3::point<FT> const& eye, std::size_t budget,
+                                                     std::size_t* solids = nullptr) {
+  std::size_t n = polygons.size();
+  std::vector<char> out(n, 0);
+  if constexpr (geometry::exact_field<FT>) {
+    using geometry::oriented_side;
+    if (n < 4) return out;
+    // Vertices welded by exact coordinates; polygon i's are ids[first[i] .. first[i + 1]).
+    std::vector<std::uint32_t> ids, first{0};
+    std::vector<geometry::e3::point<FT> const*> point_of;
+    {
+      geometry::welder<4> weld;
+      for (auto const& p : polygons) {
+        for (auto const& v : p.vertices) {
+          auto id = weld(v.homogeneous());
+          if (id == point_of.size()) point_of.push_back(&v);
+          ids.push_back(id);
+        }
+        first.push_back(static_cast<std::uint32_t>(ids.size()));
+      }
+    }
+    // Sides a → b (one word each) with their polygon, sorted.
+    auto key = [](std::uint32_t a, std::uint32_t b) { return (std::uint64_t{a} << 32) | b; };
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> sides;
+    sides.reserve(ids.size());
+    std::vector<char> open(n, 0);
+    for (std::uint32_t i = 0; i < n; ++i)
+      for (std::uint32_t k = first[i], e = first[i + 1]; k < e; ++k) {
+        auto a = ids[k], b = ids[k + 1 < e ? k + 1 : first[i]];
+        if (a == b) open[i] = 1;
+        sides.emplace_back(key(a, b), i);
+      }
+    std::sort(sides.begin(), sides.end());
+    // A side met twice the same way opens both polygons; one never met the
+    // other way opens its polygon; the others join their two polygons.
+    std::vector<std::uint32_t> rank(n, 0), parent(n);
+    for (std::uint32_t i = 0; i < n; ++i) parent[i] = i;
+    boost::disjoint_sets<std::uint32_t*, std::uint32_t*> sets(rank.data(), parent.data());
+    auto once = [&](std::size_t j) {
+      return (j == 0 || sides[j - 1].first != sides[j].first) && (j + 1 == sides.size() || sides[j + 1].first != sides[j].first);
+    };
+    for (std::size_t j = 0; j < sides.size(); ++j) {
+      auto [ab, i] = sides[j];
+      auto ba = (ab << 32) | (ab >> 32);
+      auto it = std::lower_bound(sides.begin(), sides.end(), std::pair<std::uint64_t, std::uint32_t>{ba, 0});
+      if (!once(j) || it == sides.end() || it->first != ba || !once(static_cast<std::size_t>(it - sides.begin()))) {
+        open[i] = 1;
+        continue;
+      }
+      sets.union_set(i, it->second);
+    }
+    decltype(sides)().swap(sides);
+    // Solids: polygons sorted by set, a set named by its first polygon.
+    std::vector<std::uint32_t> least(n, std::numeric_limits<std::uint32_t>::max()), set_of(n), order(n);
+    for (std::uint32_t i = 0; i < n; ++i) {
+      auto& l = least[sets.find_set(i)];
+      l = std::min(l, i);
+    }
+    for (std::uint32_t i = 0; i < n; ++i) set_of[i] = least[sets.find_set(i)], order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return set_of[a] < set_of[b]; });
+    std::vector<std::uint32_t> vertices;
+    std::vector<char> seen(point_of.size(), 0);
+    for (std::size_t lo = 0, hi; lo < n; lo = hi) {
+      hi = lo;
+      bool whole = true;
+      for (; hi < n && set_of[order[hi]] == set_of[order[lo]]; ++hi)
+        if (open[order[hi]]) whole = false;
+      std::span<std::uint32_t const> faces(order.data() + lo, hi - lo);
+      if (!whole || faces.size() < 4) continue;
+      vertices.clear();
+      for (auto f : faces)
+        for (std::uint32_t k = first[f]; k < first[f + 1]; ++k)
+          if (!seen[ids[k]]) seen[ids[k]] = 1, vertices.push_back(ids[k]);
+      for (auto v : vertices) seen[v] = 0;
+      if (faces.size() * vertices.size() > budget) continue;
+      budget -= faces.size() * vertices.size();
+      bool convex = true, strict = false, outside = false;
+      for (auto f : faces) {
+        auto const& p = polygons[f].vertices;
+        auto plane = geometry::e3::plane_through(p[0], p[1], p[2]);
+        if (plane.n.is_zero()) {
+          convex = false;
+          break;
+        }
+        if (geometry::e3::side(plane, eye) == oriented_side::positive) outside = true;
+        for (auto v : vertices) {
+          auto side = geometry::e3::side(plane, *point_of[v]);
+          if (side == oriented_side::positive) {
+            convex = false;
+            break;
+          }
+          if (side == oriented_side::negative) strict = true;
+        }
+        if (!convex) break;
+      }
+      if (!(convex && strict && outside)) continue;
+      for (auto f : faces) out[f] = 1;
+      if (solids) ++*solids;
+    }
+  }
+  return out;
+}
+
 } // namespace detail
 
 /// Builds the visibility map of `polygons` seen from `eye`.
@@ -751,7 +891,14 @@ visibility_map<FT> build(std::vector<polygon<FT>> const& polygons, geometry::e3:
     return out;
   };
   auto label = [&](std::uint32_t i) { return static_cast<std::int64_t>(polygons[i].face); };
-  return detail::build_map<FT>(polygons.size(), shape, corners, label, eye, options);
+  std::size_t solids = 0;
+  std::vector<char> hidden;
+  if (options.cull_convex_solids && !options.cull_backfaces)
+    hidden = detail::on_convex_solids_seen_from_outside(polygons, eye, detail::convex_solid_budget(polygons.size()), &solids);
+  auto hidden_if_back = [&](std::uint32_t i) { return !hidden.empty() && hidden[i] != 0; };
+  auto vm = detail::build_map<FT>(polygons.size(), shape, corners, label, hidden_if_back, eye, options);
+  vm.stats.convex_solids = solids;
+  return vm;
 }
 
 /// An input polygon given by planes: its plane and bounding planes (a
@@ -772,7 +919,7 @@ visibility_map<FT> build(std::vector<convex_piece<FT>> const& pieces, geometry::
   auto shape = [&](std::uint32_t i) { return pieces[i].shape; };
   auto corners = [&](std::uint32_t i) { return geometry::e3::homogeneous_vertices(pieces[i].shape); };
   auto label = [&](std::uint32_t i) { return pieces[i].label; };
-  return detail::build_map<FT>(pieces.size(), shape, corners, label, eye, options);
+  return detail::build_map<FT>(pieces.size(), shape, corners, label, [](std::uint32_t) { return false; }, eye, options);
 }
 
 namespace detail {

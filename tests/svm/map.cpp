@@ -119,6 +119,7 @@ template <class FT> void check_map(svm::visibility_map<FT> const& vm, bool simpl
 
 TEST_CASE("the visibility map agrees with an exact ray caster", "[svm]") {
   long compared = 0, skipped = 0;
+  std::size_t solids = 0;
   int scenes = 0;
   for (int t = 0; t < 204; ++t) {
     int family = t % 6;
@@ -128,8 +129,9 @@ TEST_CASE("the visibility map agrees with an exact ray caster", "[svm]") {
     INFO("scene " << t << ", family " << family);
     auto polys = polygons_of(sc.tris);
     e3::point<Q> eye(Q(sc.eye[0]), Q(sc.eye[1]), Q(sc.eye[2]));
-    auto raw = svm::build<Q>(polys, eye, {.simplify = false});
-    auto simple = svm::build<Q>(polys, eye);
+    auto raw = svm::build<Q>(polys, eye, {.simplify = false, .cull_convex_solids = false});
+    auto simple = svm::build<Q>(polys, eye); // back faces of convex solids proven hidden, culled
+    solids += simple.stats.convex_solids;
     check_map(raw, false);
     check_map(simple, true);
     std::optional<svm::visibility_map<Q>> culled;
@@ -151,8 +153,9 @@ TEST_CASE("the visibility map agrees with an exact ray caster", "[svm]") {
     }
   }
   std::cout << "visibility map: " << scenes << " scenes, " << compared << " directions compared with the ray caster, "
-            << skipped << " skipped (on an edge or a tie)\n";
+            << skipped << " skipped (on an edge or a tie); " << solids << " convex solids culled\n";
   CHECK(scenes >= 200);
+  CHECK(solids > 60); // the boxes and octahedra
   CHECK(compared > 150000);
 }
 
@@ -161,6 +164,7 @@ TEST_CASE("parallel views agree with an exact parallel ray caster", "[svm][paral
   // (svm/parallel.hpp), located along lines parallel to the view, against
   // the exact ray caster started far behind on each line.
   long compared = 0, skipped = 0;
+  std::size_t solids = 0;
   int scenes = 0;
   for (int t = 0; t < 102; ++t) {
     int family = t % 6;
@@ -178,6 +182,7 @@ TEST_CASE("parallel views agree with an exact parallel ray caster", "[svm][paral
     auto polys = polygons_of(sc.tris);
     svm::view_from_infinity<Q> view(polys, {Q(-d[0]), Q(-d[1]), Q(-d[2])}, e3::point<Q>(Q(1, 3), Q(-1, 7), Q(1, 5)), also);
     auto vm = svm::build<Q>(view.image(polys), view.eye());
+    solids += vm.stats.convex_solids;
     check_map(vm, true);
     for (std::size_t r = 0; r < points.size(); ++r) {
       auto const& p = points[r];
@@ -192,8 +197,9 @@ TEST_CASE("parallel views agree with an exact parallel ray caster", "[svm][paral
     }
   }
   std::cout << "parallel views: " << scenes << " scenes, " << compared << " lines compared with the ray caster, " << skipped
-            << " skipped (on an edge or a tie)\n";
+            << " skipped (on an edge or a tie); " << solids << " convex solids culled\n";
   CHECK(scenes >= 100);
+  CHECK(solids > 30); // the images of the boxes and octahedra
   CHECK(compared > 20000);
 }
 
@@ -427,10 +433,81 @@ TEST_CASE("a direction read from doubles is the direction of their exact values"
   CHECK_FALSE(svm::direction_of_doubles<Q>({-1, -2, -3}) == svm::direction_of_doubles<Q>({1, 2, 3}));
 }
 
+TEST_CASE("back faces are culled only on closed convex solids the eye is outside of", "[svm][cull]") {
+  // Each scene against the ray caster (two-sided), with the number of solids
+  // the build must prove convex and seen from outside.
+  auto box = [](ivec lo, ivec hi) {
+    std::vector<triangle> s;
+    add_box(s, lo, hi);
+    return s;
+  };
+  auto reversed = [](std::vector<triangle> s) {
+    for (auto& t : s) std::swap(t.v[1], t.v[2]);
+    return s;
+  };
+  auto join = [](std::vector<triangle> a, std::vector<triangle> const& b) {
+    a.insert(a.end(), b.begin(), b.end());
+    return a;
+  };
+  auto cube = box({0, 0, 0}, {4, 4, 4}); // its top is the last face: triangles 2 and 3
+  auto open_top = cube;
+  open_top.erase(open_top.begin() + 2, open_top.begin() + 4);
+  // The top replaced by four triangles down to a point inside: closed, not convex.
+  auto dented = open_top;
+  ivec c{2, 2, 2};
+  for (auto [a, b] : {std::pair{ivec{0, 0, 4}, ivec{4, 0, 4}}, {ivec{4, 0, 4}, ivec{4, 4, 4}}, {ivec{4, 4, 4}, ivec{0, 4, 4}},
+                      {ivec{0, 4, 4}, ivec{0, 0, 4}}})
+    dented.push_back({{a, b, c}});
+  // The top cut at the middle of a side its neighbour keeps whole: a T-junction.
+  auto t_junction = open_top;
+  ivec m{2, 0, 4};
+  t_junction.push_back({{ivec{0, 0, 4}, m, ivec{0, 4, 4}}});
+  t_junction.push_back({{m, ivec{4, 4, 4}, ivec{0, 4, 4}}});
+  t_junction.push_back({{m, ivec{4, 0, 4}, ivec{4, 4, 4}}});
+  struct cull_case {
+    char const* name;
+    std::vector<triangle> tris;
+    ivec eye;
+    std::size_t solids;
+  };
+  std::vector<cull_case> cases{
+      {"outside", cube, {7, 2, 3}, 1},
+      {"in the plane of a face", cube, {2, 9, 4}, 1},
+      {"on the line of an edge", cube, {9, 0, 0}, 1},
+      {"inside", cube, {1, 2, 3}, 0},
+      {"open", open_top, {1, 2, 9}, 0},
+      {"facing in", reversed(cube), {7, 2, 3}, 0},
+      {"dented", dented, {1, 3, 9}, 0},
+      {"T-junction", t_junction, {1, 3, 9}, 0},
+      {"two boxes glued face to face", join(cube, box({4, 0, 0}, {8, 4, 4})), {3, -5, 6}, 0},
+      {"one box behind another", join(cube, box({-1, 9, 1}, {5, 12, 3})), {2, -6, 2}, 2},
+  };
+  for (auto const& k : cases) {
+    INFO(k.name);
+    auto polys = polygons_of(k.tris);
+    e3::point<Q> eye(Q(k.eye[0]), Q(k.eye[1]), Q(k.eye[2]));
+    auto vm = svm::build<Q>(polys, eye);
+    CHECK(vm.stats.convex_solids == k.solids);
+    CHECK((vm.stats.discarded_backfacing > 0) == (k.solids > 0));
+    check_map(vm, true);
+    long compared = 0, wrong = 0;
+    for (int r = 0; r < 3000; ++r) {
+      ivec d = rp(1000);
+      if (d == ivec{0, 0, 0}) continue;
+      long truth = cast(k.tris, k.eye, d);
+      if (truth == ambiguous) continue;
+      ++compared;
+      wrong += svm::locate(vm, s2::point<Q>(std::array<Q, 3>{Q(d[0]), Q(d[1]), Q(d[2])})) != truth;
+    }
+    CHECK(compared > 2500);
+    CHECK(wrong == 0);
+  }
+}
+
 TEST_CASE("a closed sphere: culling back faces changes no answer", "[svm][scenes]") {
   auto sc = svm::scenes::sphere(8); // 224 triangles
   CHECK(sc.polygons.size() == 224);
-  auto two_sided = svm::build<Q>(sc.polygons, sc.eye);
+  auto two_sided = svm::build<Q>(sc.polygons, sc.eye, {.cull_convex_solids = false});
   auto culled = svm::build<Q>(sc.polygons, sc.eye, {.cull_backfaces = true});
   CHECK(culled.stats.discarded_backfacing > 80);
   check_map(two_sided, true);

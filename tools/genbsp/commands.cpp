@@ -78,7 +78,7 @@ std::size_t peak_bytes() {
 /// What map, locate and stats share: the scene, the eye and the build options.
 struct map_job {
   std::string scene_path, eye_text, number = "exact";
-  bool no_simplify = false, cull = false, progress = false;
+  bool no_simplify = false, cull = false, no_solid_culling = false, progress = false;
 
   void add_options(CLI::App& app, bool eye_required = true) {
     app.add_flag("--progress", progress, "report the build's progress on standard error (always on a terminal, after a second)");
@@ -89,6 +89,8 @@ struct map_job {
     app.add_option("--number", number, "arithmetic: exact (default) or double")->check(CLI::IsMember({"exact", "double"}));
     app.add_flag("--no-simplify", no_simplify, "keep the partition edges between faces of the same polygon");
     app.add_flag("--cull-backfaces", cull, "drop polygons facing away (closed, outward-oriented solids only)");
+    app.add_flag("--no-solid-culling", no_solid_culling,
+                 "keep the back faces of closed convex solids seen from outside (proven hidden: culled by default; same map)");
   }
 };
 
@@ -155,6 +157,7 @@ svm::visibility_map<FT> map_of(std::vector<svm::polygon<FT>> const& polygons, ge
 void configure(map_job const& job, svm::build_options& o) {
   o.simplify = !job.no_simplify;
   o.cull_backfaces = job.cull;
+  o.cull_convex_solids = !job.no_solid_culling;
   // Progress: on a terminal, one updated line once the build has run a
   // second; with --progress elsewhere, a line every 10 %.
   // A batch reports progress per job, not per build.
@@ -239,6 +242,7 @@ svm::visibility_map<rational> orthographic_map(map_job const& job, svm::view_fro
                                                shadow_job const& shadows) {
   o.simplify = !job.no_simplify;
   o.cull_backfaces = job.cull;
+  o.cull_convex_solids = !job.no_solid_culling;
   if (shadows.lights.empty()) return svm::build<rational>(image, view.eye(), o);
   auto pieces = shadowed_pieces(polygons_in<rational>(l), shadows, o.seed);
   for (auto& p : pieces) p.shape = view.carry(p.shape, true);
@@ -263,6 +267,7 @@ svm::build_options parallel_options(map_job const& job) {
   svm::build_options o;
   o.simplify = !job.no_simplify;
   o.cull_backfaces = job.cull;
+  o.cull_convex_solids = !job.no_solid_culling;
   return o;
 }
 
@@ -278,6 +283,7 @@ template <class FT> json stats_json(svm::visibility_map<FT> const& vm, loaded co
           {"discarded_faces", st.discarded_edge_on + st.discarded_backfacing},
           {"discarded_edge_on", st.discarded_edge_on},
           {"discarded_backfacing", st.discarded_backfacing},
+          {"convex_solids", st.convex_solids},
           {"discarded_outside_window", st.discarded_outside_window},
           {"fragments", st.fragments},
           {"hidden_pieces", st.hidden_pieces},
