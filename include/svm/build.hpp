@@ -128,6 +128,14 @@ template <geometry::number FT> struct visibility_map {
   locator_tree locator;
   bool locator_is_construction_tree = false;
   std::uint64_t seed = 1; ///< the build's seed, which the locator's splitter order also uses
+  /// For each input, whether it was left out facing away from the eye on a
+  /// closed convex solid (`build_options::cull_convex_solids`): hidden
+  /// wherever it lies.  Empty when no input was.
+  std::vector<char> hidden_backfaces;
+  /// The build's `window` circles, and whether it left directions out by
+  /// `exclude` too: where the map shows the scene.
+  std::vector<circle_normal> window;
+  bool excluded = false;
   build_statistics stats;
 };
 
@@ -546,6 +554,8 @@ visibility_map<FT> build_map(std::size_t count, Shape&& shape_of, Corners&& corn
   auto fallbacks0 = filter_stats().fallbacks;
   visibility_map<FT> vm;
   vm.seed = options.seed;
+  vm.window = options.window;
+  vm.excluded = !options.exclude.empty();
   auto& st = vm.stats;
   st.input_polygons = count;
 
@@ -591,6 +601,10 @@ visibility_map<FT> build_map(std::size_t count, Shape&& shape_of, Corners&& corn
     }
     if (side == oriented_side::negative && (options.cull_backfaces || hidden_if_back(i))) {
       ++st.discarded_backfacing;
+      if (!options.cull_backfaces) {
+        vm.hidden_backfaces.resize(count, 0);
+        vm.hidden_backfaces[i] = 1;
+      }
       continue;
     }
     input.push_back({std::move(s), i});

@@ -104,6 +104,7 @@ struct line_statistics {
   std::size_t edges_through_eye = 0; ///< edges on a line through the eye (no length in the view)
   std::size_t arc_pieces = 0;        ///< pieces of edges between map cells, before merging
   std::size_t edge_on_tests = 0;     ///< edges tested against polygons seen edge-on
+  std::size_t hidden_whole = 0;      ///< edges between two hidden back faces (`visibility_map::hidden_backfaces`): no map descent
   double seconds = 0;
 };
 
@@ -487,6 +488,22 @@ line_set<FT> hidden_lines(visibility_map<FT> const& vm, geometry::e3::point<FT> 
     return l < 0 ? -1 : static_cast<std::int64_t>(polygon_of(l));
   };
 
+  // An edge between two polygons culled as hidden back faces is hidden
+  // whole, when it lies wholly in view: the map clips nothing, or both its
+  // ends lie strictly inside the build's window (a convex cone).
+  bool const whole_view = std::none_of(m.faces().begin(), m.faces().end(), [](auto const& f) { return f.label == clipped; });
+  std::vector<v3<FT>> window;
+  for (auto const& c : vm.window) window.push_back({FT(c[0]), FT(c[1]), FT(c[2])});
+  auto in_window = [&](eye_relative<FT> const& x) {
+    return std::all_of(window.begin(), window.end(), [&](v3<FT> const& c) {
+      return sgn(FT(c[0] * FT(x.p[0]) + c[1] * FT(x.p[1]) + c[2] * FT(x.p[2]))) > 0;
+    });
+  };
+  auto hidden_whole = [&](scene_edge<FT> const& e, eye_relative<FT> const& ra, eye_relative<FT> const& rb) {
+    if (vm.hidden_backfaces.empty() || e.polygons.size() != 2) return false;
+    if (!vm.hidden_backfaces[e.polygons[0]] || !vm.hidden_backfaces[e.polygons[1]]) return false;
+    return whole_view || (!vm.excluded && in_window(ra) && in_window(rb));
+  };
   std::vector<std::pair<S, index>> below, across;
   struct run {
     FT t0, t1;
@@ -519,6 +536,12 @@ line_set<FT> hidden_lines(visibility_map<FT> const& vm, geometry::e3::point<FT> 
       continue;
     }
     if (kind == edge_kind::never) continue;
+    if (hidden_whole(e, ra, rb)) {
+      ++out.stats.hidden_whole;
+      if (kind != edge_kind::smooth)
+        out.pieces.push_back({ei, FT(0), FT(1), true, kind == edge_kind::silhouette ? line_class::silhouette : line_class::crease});
+      continue;
+    }
     auto BA = minus(B, A);
     // The parameter along the edge where a circle through the eye meets it.
     auto t_at = [&](iv3<FT> const& c) { return ratio<FT>(-geometry::dot(c, A), geometry::dot(c, BA)); };

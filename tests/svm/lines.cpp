@@ -74,6 +74,7 @@ bool meets(std::vector<R3> const& v, R3 const& n, R3 const& o, R3 const& x) {
 struct check_result {
   std::size_t samples = 0, wrong = 0, pieces = 0, hidden_pieces = 0, gaps = 0;
   std::size_t intersections = 0; ///< map edges drawn as intersection curves
+  std::size_t hidden_whole = 0;  ///< edges found hidden whole from the build's culled back faces
 };
 
 /// A polygon for the ray caster, with a double copy of its plane to skip, with
@@ -194,6 +195,7 @@ check_result run(std::vector<svm::polygon<Q>> const& polys, P const& eye, double
   auto ls = svm::hidden_lines(vm, eye, polys, {.crease = crease});
   auto r = check_lines(ls, polys, eye);
   for (auto const& ml : ls.map_lines) r.intersections += ml.cls == svm::line_class::intersection;
+  r.hidden_whole = ls.stats.hidden_whole;
   return r;
 }
 
@@ -360,6 +362,7 @@ TEST_CASE("hidden lines agree with an exact ray cast at sampled points", "[lines
     CHECK(r.gaps == 0);
     CHECK(r.pieces > 0);
     total.samples += r.samples, total.wrong += r.wrong, total.pieces += r.pieces, total.hidden_pieces += r.hidden_pieces, total.gaps += r.gaps;
+    total.hidden_whole += r.hidden_whole;
     ++scenes;
   };
   for (std::size_t n : {2, 4, 6}) {
@@ -399,9 +402,64 @@ TEST_CASE("hidden lines agree with an exact ray cast at sampled points", "[lines
         eyes[static_cast<std::size_t>(seed) % 4], 0, false);
   }
   std::cout << "hidden lines: " << scenes << " scenes, " << total.pieces << " pieces (" << total.hidden_pieces << " hidden), "
-            << total.samples << " samples checked by ray casting, " << total.wrong << " wrong, " << total.gaps << " gaps\n";
+            << total.samples << " samples checked by ray casting, " << total.wrong << " wrong, " << total.gaps << " gaps; "
+            << total.hidden_whole << " edges hidden whole between culled back faces\n";
   CHECK(total.wrong == 0);
+  CHECK(total.hidden_whole > 50);
   CHECK(total.hidden_pieces > 0);
+}
+
+TEST_CASE("hidden lines: edges between culled back faces come out as the two-sided map gives them", "[lines][cull]") {
+  // Scenes of closed convex solids, with and without a narrow window around
+  // the direction of the scene's centre: the pieces (edge, interval,
+  // visibility, class) read off the map built without the culled back faces
+  // equal those of the two-sided map, and some edges take the short way.
+  std::size_t shortcut = 0, windowed = 0, compared = 0;
+  auto check_scene = [&](std::string const& name, svm::scenes::scene const& sc) {
+    auto polys = relabelled(sc.polygons);
+    std::array<double, 3> lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+    for (auto const& p : polys)
+      for (auto const& v : p.vertices)
+        for (std::size_t k = 0; k < 3; ++k) lo[k] = std::min(lo[k], v[k].convert_to<double>()), hi[k] = std::max(hi[k], v[k].convert_to<double>());
+    std::array<double, 3> f{};
+    for (std::size_t k = 0; k < 3; ++k) f[k] = (lo[k] + hi[k]) / 2 - sc.eye[k].convert_to<double>();
+    double fl = std::hypot(f[0], f[1], f[2]);
+    for (auto& x : f) x /= fl;
+    std::array<double, 3> u = std::abs(f[2]) < 0.9 ? std::array<double, 3>{-f[1], f[0], 0} : std::array<double, 3>{0, -f[2], f[1]};
+    double ul = std::hypot(u[0], u[1], u[2]);
+    for (auto& x : u) x /= ul;
+    std::array<double, 3> v{f[1] * u[2] - f[2] * u[1], f[2] * u[0] - f[0] * u[2], f[0] * u[1] - f[1] * u[0]};
+    for (bool narrow : {false, true}) {
+      INFO(name << (narrow ? ", narrow window" : ""));
+      svm::build_options o;
+      if (narrow)
+        for (auto [w, s] : {std::pair{u, 1.0}, {u, -1.0}, {v, 1.0}, {v, -1.0}})
+          o.window.push_back({0.3 * f[0] + s * w[0], 0.3 * f[1] + s * w[1], 0.3 * f[2] + s * w[2]});
+      auto culled = svm::build<Q>(polys, sc.eye, o);
+      o.cull_convex_solids = false;
+      auto two_sided = svm::build<Q>(polys, sc.eye, o);
+      CHECK(culled.stats.convex_solids > 0);
+      auto a = svm::hidden_lines(culled, sc.eye, polys), b = svm::hidden_lines(two_sided, sc.eye, polys);
+      CHECK(b.stats.hidden_whole == 0);
+      shortcut += a.stats.hidden_whole;
+      if (narrow) windowed += a.stats.hidden_whole;
+      REQUIRE(a.pieces.size() == b.pieces.size());
+      for (std::size_t i = 0; i < a.pieces.size(); ++i) {
+        auto const &x = a.pieces[i], &y = b.pieces[i];
+        CHECK((x.edge == y.edge && x.t0 == y.t0 && x.t1 == y.t1 && x.hidden == y.hidden && x.cls == y.cls));
+      }
+      compared += a.pieces.size();
+    }
+  };
+  for (std::size_t n : {3, 8}) {
+    check_scene("random " + std::to_string(n), svm::scenes::random_cubes(n, n + 1));
+    check_scene("bricks " + std::to_string(n), svm::scenes::bricks(n));
+    check_scene("platforms " + std::to_string(n), svm::scenes::platforms(n));
+  }
+  std::cout << "hidden lines with culled back faces: " << compared << " pieces compared, " << shortcut << " edges hidden whole ("
+            << windowed << " in a narrow window)\n";
+  CHECK(shortcut > 40);
+  CHECK(windowed > 5);
 }
 
 TEST_CASE("pen-travel ordering: the grid search picks what a scan of every line picks", "[lines][render]") {
