@@ -34,7 +34,6 @@
 #include <span>
 #include <stdexcept>
 #include <type_traits>
-#include <unordered_map>
 
 namespace svm {
 

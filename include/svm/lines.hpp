@@ -500,9 +500,9 @@ line_set<FT> hidden_lines(visibility_map<FT> const& vm, geometry::e3::point<FT> 
     });
   };
   auto hidden_whole = [&](scene_edge<FT> const& e, eye_relative<FT> const& ra, eye_relative<FT> const& rb) {
-    if (vm.hidden_backfaces.empty() || e.polygons.size() != 2) return false;
+    if (vm.hidden_backfaces.size() != polygons.size() || e.polygons.size() != 2) return false;
     if (!vm.hidden_backfaces[e.polygons[0]] || !vm.hidden_backfaces[e.polygons[1]]) return false;
-    return whole_view || (!vm.excluded && in_window(ra) && in_window(rb));
+    return whole_view || (!window.empty() && !vm.excluded && in_window(ra) && in_window(rb));
   };
   std::vector<std::pair<S, index>> below, across;
   struct run {
