@@ -482,6 +482,13 @@ TEST_CASE("back faces are culled only on closed convex solids the eye is outside
       {"two boxes glued face to face", join(cube, box({4, 0, 0}, {8, 4, 4})), {3, -5, 6}, 0},
       {"one box behind another", join(cube, box({-1, 9, 1}, {5, 12, 3})), {2, -6, 2}, 2},
   };
+  // A solid past the budget is left whole: this cube costs 12 faces × 8 vertices.
+  for (std::size_t budget : {95, 96}) {
+    std::size_t counted = 0;
+    auto hidden = svm::detail::on_convex_solids_seen_from_outside(polygons_of(cube), e3::point<Q>(Q(7), Q(2), Q(3)), budget, &counted);
+    CHECK(counted == (budget == 96 ? 1u : 0u));
+    CHECK(std::count(hidden.begin(), hidden.end(), 1) == (budget == 96 ? 12 : 0));
+  }
   for (auto const& k : cases) {
     INFO(k.name);
     auto polys = polygons_of(k.tris);
