@@ -25,6 +25,7 @@
 // grows faster than linearly on some of these inputs).  Progress goes to
 // stderr, the table to stdout, the results to JSON and CSV (rewritten after
 // every case, so an interrupted run keeps what it measured).
+#include <geometry/gmp_pool.hpp>
 #include <boolean/polygons.hpp>
 
 #include <boost/version.hpp>
@@ -739,6 +740,7 @@ void print_row(options const& o, row const& r) {
 } // namespace
 
 int main(int argc, char** argv) {
+  geometry::use_gmp_pool(); // as the genbsp tool runs
   options o;
   if (auto code = parse_options(argc, argv, o)) return *code;
   std::signal(SIGPIPE, SIG_IGN);

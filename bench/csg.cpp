@@ -20,6 +20,7 @@
 // Each library runs each case in a child process stopped after the limit;
 // a case that does not finish is reported as such.  The median of the runs
 // is reported, with the output's faces, vertices and volume (as a double).
+#include <geometry/gmp_pool.hpp>
 #include "common.hpp"
 
 #include <boolean/polyhedra.hpp>
@@ -283,6 +284,7 @@ options parse(int argc, char** argv) {
 } // namespace
 
 int main(int argc, char** argv) {
+  geometry::use_gmp_pool(); // as the genbsp tool runs
   auto o = parse(argc, argv);
   std::string json = "{\"compiler\": " + bench::json_string(bench::compiler()) + ", \"optimised\": " + (bench::optimised() ? "true" : "false") +
                      ", \"cgal\": " + bench::json_string(CGAL_VERSION_STR) + ", \"cases\": [";

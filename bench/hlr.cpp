@@ -18,6 +18,7 @@
 // up, a square image 1.05 times the box's diagonal wide: `genbsp render
 // --projection orthographic --dir … --style lines --hidden dashed`.
 // Prints one JSON object.
+#include <geometry/gmp_pool.hpp>
 #include "common.hpp"
 
 #include <geometry/io/polygons.hpp>
@@ -195,6 +196,7 @@ template <class Result, class ToPixel> lines2d collect(Result& out, ToPixel cons
 } // namespace
 
 int main(int argc, char** argv) {
+  geometry::use_gmp_pool(); // as the genbsp tool runs
   CLI::App app{"Hidden-line removal of one scene and view: genbsp's exact lines and Open CASCADE's polygonal (and, with "
                "--occt-exact, exact) HLR; prints one JSON object"};
   std::string path, dir_text = "-1,1,-1";

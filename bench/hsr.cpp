@@ -11,6 +11,7 @@
 // The camera is `genbsp render`'s default: looking at the centre of the
 // scene's bounding box, z up, 60° horizontal field of view, a square image.
 // Prints one JSON object.
+#include <geometry/gmp_pool.hpp>
 #include "common.hpp"
 
 #include <geometry/io/polygons.hpp>
@@ -183,6 +184,7 @@ long gl2ps_svg(std::vector<poly> const& scene, view const& v, double far, std::s
 } // namespace
 
 int main(int argc, char** argv) {
+  geometry::use_gmp_pool(); // as the genbsp tool runs
   CLI::App app{"Hidden-surface removal of one scene and view: genbsp's exact map, a software z-buffer and (when built with it) "
                "gl2ps's BSP export; prints one JSON object"};
   std::string path, eye_text, svg = "/tmp/bench_hsr_gl2ps.svg";

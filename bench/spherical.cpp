@@ -20,6 +20,7 @@
 // valid by construction) and the operation, with S2Polygon's default snap
 // function.  Each library runs each case in a child process, stopped after
 // the limit.
+#include <geometry/gmp_pool.hpp>
 #include <boolean/spherical.hpp>
 
 #include <s2/s2loop.h>
@@ -370,6 +371,7 @@ std::string sizes(measurement const& m) {
 } // namespace
 
 int main(int argc, char** argv) {
+  geometry::use_gmp_pool(); // as the genbsp tool runs
   options o;
   if (auto code = parse(argc, argv, o)) return *code;
   std::printf("bench_spherical: %u hardware threads, %s%s; limit %g s per run; seed %llu; %d round%s\n\n",

@@ -3,6 +3,7 @@
 // each triangle in the view, projected and filled, back to front).
 //
 // Usage: bench_svg_size [--scene terrain|sphere] [--n N] [--json FILE]
+#include <geometry/gmp_pool.hpp>
 #include <svm/build.hpp>
 #include <svm/camera.hpp>
 #include <svm/render/drawing.hpp>
@@ -33,6 +34,7 @@ int usage(char const* why) {
 } // namespace
 
 int main(int argc, char** argv) {
+  geometry::use_gmp_pool(); // as the genbsp tool runs
   std::string scene_name = "terrain", json_path;
   std::size_t n = 0;
   for (int i = 1; i < argc; ++i) {

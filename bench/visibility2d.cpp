@@ -20,6 +20,7 @@
 //
 // --repeat R runs each of genbsp's queries R times (the time is their
 // median), so that a profile of the program is mostly genbsp's queries.
+#include <geometry/gmp_pool.hpp>
 #include "common.hpp"
 
 #include <svm/visibility2d.hpp>
@@ -170,6 +171,7 @@ double since(std::chrono::steady_clock::time_point t) { return std::chrono::dura
 } // namespace
 
 int main(int argc, char** argv) {
+  geometry::use_gmp_pool(); // as the genbsp tool runs
   std::vector<std::size_t> sizes{100, 1000, 10000, 100000};
   std::size_t queries = 10, repeat = 1;
   std::string json_out;

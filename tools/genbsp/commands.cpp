@@ -3,6 +3,7 @@
 // (visibility2d.cpp) and batch (batch.cpp).
 // Bad input gets one line on stderr (naming file and line where there is
 // one) and exit status 2; output files are written whole or not at all.
+#include <geometry/gmp_pool.hpp>
 #include <geometry/io/polygons.hpp>
 #include <geometry/io/scene.hpp>
 #include <svm/camera.hpp>
@@ -1308,6 +1309,7 @@ int run(int argc, char** argv) {
 int run_main(int argc, char** argv) {
   program_owns_process() = true;
   mp_set_memory_functions(gmp_allocate, gmp_reallocate, gmp_free);
+  geometry::use_gmp_pool(); // in front of those
   try {
     return run(argc, argv);
   } catch (std::bad_alloc const&) {
