@@ -492,12 +492,15 @@ line_set<FT> hidden_lines(visibility_map<FT> const& vm, geometry::e3::point<FT> 
   // whole, when it lies wholly in view: the map clips nothing, or both its
   // ends lie strictly inside the build's window (a convex cone).
   bool const whole_view = std::none_of(m.faces().begin(), m.faces().end(), [](auto const& f) { return f.label == clipped; });
-  std::vector<v3<FT>> window;
-  for (auto const& c : vm.window) window.push_back({FT(c[0]), FT(c[1]), FT(c[2])});
+  // The window's circles as integer multiples (over an exact field), so
+  // that a point's side is the sign of an integer dot product (w > 0).
+  std::vector<iv3<FT>> window;
+  for (auto const& c : vm.window) {
+    if constexpr (geometry::exact_field<FT>) window.push_back(geometry::detail::integer_multiple(v3<FT>{FT(c[0]), FT(c[1]), FT(c[2])}));
+    else window.push_back({FT(c[0]), FT(c[1]), FT(c[2])});
+  }
   auto in_window = [&](eye_relative<FT> const& x) {
-    return std::all_of(window.begin(), window.end(), [&](v3<FT> const& c) {
-      return sgn(FT(c[0] * FT(x.p[0]) + c[1] * FT(x.p[1]) + c[2] * FT(x.p[2]))) > 0;
-    });
+    return std::all_of(window.begin(), window.end(), [&](iv3<FT> const& c) { return sgn(geometry::dot(c, x.p)) > 0; });
   };
   auto hidden_whole = [&](scene_edge<FT> const& e, eye_relative<FT> const& ra, eye_relative<FT> const& rb) {
     if (vm.hidden_backfaces.size() != polygons.size() || e.polygons.size() != 2) return false;
@@ -682,11 +685,40 @@ line_set<FT> hidden_lines(visibility_map<FT> const& vm, geometry::e3::point<FT> 
   // Whether map edge `he` lies on the side a–b of a polygon (its sides
   // whole: a run of scene edges cut at T-junctions may hold one map edge).
   // (Positive multiples of a − O, b − O and the map's vectors will do.)
-  auto on_side = [&](index he, iv3<FT> const& A, iv3<FT> const& B) {
-    auto n = geometry::cross(A, B);
+  // The circle of each polygon side a → b, a positive multiple of
+  // (a − O) × (b − O) (primitive over an exact field, as the map's circles
+  // are, so that one circle is one vector up to sign), made when first needed.
+  std::vector<std::vector<std::optional<iv3<FT>>>> side_circles(polygons.size());
+  auto side_circle = [&](std::size_t p, std::size_t k) -> iv3<FT> const& {
+    auto& sc = side_circles[p];
+    if (sc.empty()) sc.resize(rel[p].size());
+    if (!sc[k]) {
+      auto const& v = rel[p];
+      auto n = geometry::cross(v[k].p, v[(k + 1) % v.size()].p);
+      if constexpr (geometry::exact_field<FT>) geometry::detail::make_primitive(n);
+      sc[k] = std::move(n);
+    }
+    return *sc[k];
+  };
+  auto same_circle = [](iv3<FT> const& c, iv3<FT> const& n) {
+    if constexpr (geometry::exact_field<FT>) {
+      bool plus = true, minus = true;
+      for (std::size_t k = 0; k < 3; ++k) {
+        plus = plus && c[k] == n[k];
+        minus = minus && c[k] == -n[k];
+      }
+      return plus || minus;
+    } else {
+      return is_zero3(geometry::cross(c, n));
+    }
+  };
+  auto on_side = [&](index he, std::size_t p, std::size_t k) {
+    auto const& v = rel[p];
+    auto const &A = v[k].p, &B = v[(k + 1) % v.size()].p;
+    auto const& n = side_circle(p, k);
     if (is_zero3(n)) return false;
     auto const& c = integers_of(m.circles()[m.half_edges()[he].circle].n);
-    if (!is_zero3(geometry::cross(c, n))) return false;
+    if (!same_circle(c, n)) return false;
     for (index v : {m.origin(he), m.target(he)}) {
       auto const point = m.point(v);
       auto const& d = integers_of(point);
@@ -706,8 +738,8 @@ line_set<FT> hidden_lines(visibility_map<FT> const& vm, geometry::e3::point<FT> 
     bool known = false;
     for (auto p : {pa, pb}) {
       if (p < 0 || known) continue;
-      auto const& v = rel[static_cast<std::size_t>(p)];
-      for (std::size_t k = 0; k < v.size() && !known; ++k) known = on_side(h, v[k].p, v[(k + 1) % v.size()].p);
+      auto const pi = static_cast<std::size_t>(p);
+      for (std::size_t k = 0; k < rel[pi].size() && !known; ++k) known = on_side(h, pi, k);
     }
     if (!known) out.map_lines.push_back({h, line_class::intersection});
   }
