@@ -395,7 +395,12 @@ edge_kind kind_from(scene_edge<FT> const& e, std::vector<polygon<FT>> const& pol
                     eye_relative<FT> const& ra, eye_relative<FT> const& rb, iv3<FT> const& n) {
   if (e.polygons.size() == 1) return edge_kind::boundary;
   if (e.polygons.size() > 2) return edge_kind::crease;
-  auto E = difference(rb, ra);
+  // (b − a, and the other vectors below, are made only where needed.)
+  std::optional<iv3<FT>> E_;
+  auto E = [&]() -> iv3<FT> const& {
+    if (!E_) E_ = difference(rb, ra);
+    return *E_;
+  };
   // A vertex of each polygon off the edge's line: where the edge is a whole
   // side, any other vertex (the polygon is strictly convex); where it is
   // part of a side (a T-junction), one not on its line.
@@ -405,24 +410,23 @@ edge_kind kind_from(scene_edge<FT> const& e, std::vector<polygon<FT>> const& pol
     for (auto const& v : p.vertices) ends += (v == e.a) + (v == e.b);
     for (std::size_t k = 0; k < p.vertices.size(); ++k) {
       auto const& v = p.vertices[k];
-      if (!(v == e.a) && !(v == e.b) && (ends == 2 || !is_zero3(geometry::cross(E, difference(rel[pi][k], ra))))) return rel[pi][k];
+      if (!(v == e.a) && !(v == e.b) && (ends == 2 || !is_zero3(geometry::cross(E(), difference(rel[pi][k], ra))))) return rel[pi][k];
     }
     return rel[pi][0];
   };
   auto const &cp = off(e.polygons[0]), &cq = off(e.polygons[1]);
   int sp = sgn(geometry::dot(n, cp.p)), sq = sgn(geometry::dot(n, cq.p));
   bool coplanar = sgn(planes[e.polygons[0]].at(cq)) == 0;
-  auto up = difference(cp, ra), uq = difference(cq, ra);
   // Both polygons on one side of the edge in the view: the surface folds there.
   if (sp == 0 || sq == 0 || sp == sq) {
     // A flat pair seen exactly edge-on is still a diagonal.
     if (coplanar && sp == 0 && sq == 0)
-      if (sgn(geometry::dot(geometry::cross(E, up), geometry::cross(E, uq))) < 0) return edge_kind::never;
+      if (sgn(geometry::dot(geometry::cross(E(), difference(cp, ra)), geometry::cross(E(), difference(cq, ra)))) < 0) return edge_kind::never;
     return edge_kind::silhouette;
   }
   if (coplanar) return edge_kind::never;
   if (o.crease <= 0) return edge_kind::crease;
-  double b = bend(direction_doubles<FT>(E), direction_doubles<FT>(up), direction_doubles<FT>(uq));
+  double b = bend(direction_doubles<FT>(E()), direction_doubles<FT>(difference(cp, ra)), direction_doubles<FT>(difference(cq, ra)));
   return b > o.crease * std::numbers::pi / 180 ? edge_kind::crease : edge_kind::smooth;
 }
 
