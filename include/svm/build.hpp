@@ -435,13 +435,18 @@ public:
   }
 
   /// Rebuilds the tree when it has grown past its limit; whether it did.
+  /// A rebuild that at least halved the tree (the covered region is simpler
+  /// than its history: boxes on a floor) sets the next at twice the new
+  /// size; one that did not (many separate visible regions: random cubes)
+  /// sets it at eight times, since recomputing the boundary then costs more
+  /// than the smaller tree saves.
   bool rebuild_if_grown() {
     if (cover_.interior_nodes() <= limit_) return false;
     std::size_t before = cover_.interior_nodes();
     cover_.rebuild(bsp::random_order(seed_ + rebuilds_));
     circles_.refresh(cover_.as_tree());
     ++rebuilds_;
-    growth_ = 2 * cover_.interior_nodes() < before ? 2 : 4;
+    growth_ = 2 * cover_.interior_nodes() < before ? 2 : 8;
     limit_ = std::max(least_rebuild, growth_ * cover_.interior_nodes());
     return true;
   }
