@@ -128,20 +128,19 @@ inline void* reallocate(void* p, std::size_t old_size, std::size_t new_size) {
 
 /// Puts per-thread free lists in front of GMP's allocator (see the file's
 /// comment).  Call it at the start of `main`, before other threads use GMP;
-/// calling it again does nothing.  Returns whether the pool is in place.
+/// calling it again does nothing (`gmp_pool_in_use()` tells).
 ///
 /// GMP's memory functions are global to the process, so a library never
 /// calls this on its own: the `genbsp` tool, the benchmarks and the tests do.
-inline bool use_gmp_pool() noexcept {
+inline void use_gmp_pool() noexcept {
   namespace p = detail::gmp_pool;
   p::allocate_fn a = nullptr;
   p::reallocate_fn r = nullptr;
   p::free_fn f = nullptr;
   mp_get_memory_functions(&a, &r, &f);
-  if (a == &p::allocate) return true;
+  if (a == &p::allocate) return;
   p::previous() = {a, r, f};
   mp_set_memory_functions(&p::allocate, &p::reallocate, &p::release);
-  return true;
 }
 
 /// Whether GMP allocates through the pool.

@@ -30,10 +30,13 @@ integer factorial(int n) {
 } // namespace
 
 TEST_CASE("GMP's allocations go through the pool, which reuses freed blocks of the same size", "[number][gmp_pool]") {
-  REQUIRE(geometry::use_gmp_pool());
+  geometry::use_gmp_pool();
   REQUIRE(geometry::gmp_pool_in_use());
-  REQUIRE(geometry::use_gmp_pool()); // twice: nothing changes
+  functions before;
+  geometry::use_gmp_pool(); // twice: nothing changes (the pool is not its own fallback)
   functions f;
+  REQUIRE(f.allocate == before.allocate);
+  REQUIRE(geometry::detail::gmp_pool::previous().allocate != &geometry::detail::gmp_pool::allocate);
   REQUIRE(f.allocate == &geometry::detail::gmp_pool::allocate);
   REQUIRE(f.release == &geometry::detail::gmp_pool::release);
 
@@ -74,7 +77,8 @@ TEST_CASE("GMP's allocations go through the pool, which reuses freed blocks of t
 }
 
 TEST_CASE("Exact arithmetic is unchanged with the pool, in several threads at once", "[number][gmp_pool]") {
-  REQUIRE(geometry::use_gmp_pool());
+  geometry::use_gmp_pool();
+  REQUIRE(geometry::gmp_pool_in_use());
   // 60! against its digits; 400! (2,886 bits: 46 limbs, past the pooled
   // sizes) divided back down to 1; sums of fractions.
   integer const f60("8320987112741390144276341183223364380754172606361245952449277696409600000000000000");
